@@ -1,0 +1,250 @@
+#!/usr/bin/env python3
+"""Run time against error: rcache's radiance cache vs its path tracer, side by side in one run.
+
+For each bench scene: a path-traced reference (cached by a hash of the scene's files and settings),
+then a ladder of path-tracer spp and a ladder of rcache settings. Every point records wall time,
+relMSE, RMSE, records and peak memory as one JSON line. From the curves: the time each method needs
+to reach given relMSE levels, and the ratio path/rcache; a log-log plot per scene; an image strip at
+equal time. Usage:  bench/run_bench.py [--quick] [--out DIR] [--scenes a,b] [--threads N]
+"""
+import argparse
+import hashlib
+import json
+import math
+import os
+import platform
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+RCACHE = os.path.join(ROOT, "build", "rcache")
+
+# Scenes and the ladders. Full mode: 512×512 as the issue asks; quick mode: small images, short ladders.
+SCENES = ["cornell_glossy", "glossy_sweep", "aniso_sphere", "curved_glossy", "cornell_diffuse"]
+FULL = dict(res=512, ref_spp=4096, path_spp=[1, 2, 4, 8, 16, 32, 64, 128],
+            rcache=[dict(rays=r, a=a) for r, a in [(256, 0.6), (512, 0.5), (1024, 0.4), (2048, 0.3), (4096, 0.2)]],
+            variants=[("adaptive=false", {"adaptive": "false"}), ("gradients=false", {"gradients": "false"}),
+                      ("frame=record", {"frame": "record"}), ("mode=dominant", {"mode": "dominant"}),
+                      ("order=6", {"order": "6"}), ("order=14", {"order": "14"})],
+            rcache_spp=4)
+QUICK = dict(res=96, ref_spp=512, path_spp=[1, 4, 16, 64],
+             rcache=[dict(rays=r, a=a) for r, a in [(256, 0.6), (1024, 0.4)]],
+             variants=[("adaptive=false", {"adaptive": "false"}), ("frame=record", {"frame": "record"}),
+                       ("mode=dominant", {"mode": "dominant"})],
+             rcache_spp=2)
+
+
+def render(scene_path, out_exr, integrator, spp, res, threads, defines, stats_path):
+    cmd = [RCACHE, scene_path, "-o", out_exr, "--integrator", integrator, "--spp", str(spp), "--quiet",
+           "--stats", stats_path, "-t", str(threads), "-D", "res=%d" % res]
+    for k, v in defines.items():
+        cmd += ["-D", "%s=%s" % (k, v)]
+    # Peak memory of this child alone: wait4 returns its own rusage.
+    t0 = time.perf_counter()
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    _, status, usage = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - t0
+    err = proc.stderr.read()
+    proc.stdout.read()
+    code = os.waitstatus_to_exitcode(status)
+    if code != 0:
+        raise RuntimeError("render failed (%d): %s\n%s" % (code, " ".join(cmd), err.strip()))
+    with open(stats_path) as f:
+        stats = json.load(f)
+    return wall, usage.ru_maxrss / 1024.0, stats
+
+
+def diff(test, ref, heatmap=None):
+    cmd = [RCACHE, "diff", test, ref, "--json"]
+    if heatmap:
+        cmd += ["--heatmap", heatmap]
+    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
+    return json.loads(out)
+
+
+def scene_hash(scene_path, settings):
+    h = hashlib.sha256()
+    base = os.path.dirname(scene_path)
+    for dirpath, _, files in os.walk(base):
+        for name in sorted(files):
+            if name.endswith((".xml", ".obj", ".ply")):
+                with open(os.path.join(dirpath, name), "rb") as f:
+                    h.update(name.encode())
+                    h.update(f.read())
+    h.update(json.dumps(settings, sort_keys=True).encode())
+    return h.hexdigest()[:16]
+
+
+def time_to_reach(points, target):
+    """Log-log interpolation of time at which relMSE falls to target; None if never reached."""
+    pts = sorted((p["time_s"], p["relmse"]) for p in points if p["relmse"] > 0)
+    best = None
+    for (t0, e0), (t1, e1) in zip(pts, pts[1:]):
+        if (e0 - target) * (e1 - target) <= 0 and e0 != e1:
+            f = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0))
+            t = math.exp(math.log(t0) + f * (math.log(t1) - math.log(t0)))
+            best = t if best is None else min(best, t)
+    for t, e in pts:
+        if e <= target:
+            best = t if best is None else min(best, t)
+            break
+    return best
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--quick", action="store_true", help="small images, short ladders (< 5 min on 2 cores)")
+    ap.add_argument("--out", default=os.path.join(ROOT, "bench", "out"))
+    ap.add_argument("--scenes", default=None, help="comma-separated scene names (default: all bench scenes)")
+    ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--no-plot", action="store_true")
+    args = ap.parse_args()
+    cfg = QUICK if args.quick else FULL
+    scenes = args.scenes.split(",") if args.scenes else (SCENES[:2] if args.quick else SCENES)
+    if not os.path.exists(RCACHE):
+        sys.exit("bench: %s not found; run scripts/build.sh first" % RCACHE)
+    os.makedirs(args.out, exist_ok=True)
+    os.makedirs(os.path.join(args.out, "ref"), exist_ok=True)
+    jsonl_path = os.path.join(args.out, "results.jsonl")
+    machine = "%s, %d threads" % (platform.processor() or platform.machine(), args.threads)
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    machine = "%s, %d threads" % (line.split(":", 1)[1].strip(), args.threads)
+                    break
+    except OSError:
+        pass
+    summary = []
+    with open(jsonl_path, "w") as jsonl:
+        def emit(rec):
+            rec.update(machine=machine, date=time.strftime("%Y-%m-%d"), quick=args.quick)
+            jsonl.write(json.dumps(rec) + "\n")
+            jsonl.flush()
+            print(json.dumps(rec), flush=True)
+
+        for name in scenes:
+            scene_path = os.path.join(ROOT, "scenes", name + ".xml")
+            work = os.path.join(args.out, name)
+            os.makedirs(work, exist_ok=True)
+            key = scene_hash(scene_path, dict(res=cfg["res"], spp=cfg["ref_spp"]))
+            ref = os.path.join(args.out, "ref", "%s-%s.exr" % (name, key))
+            if not os.path.exists(ref):
+                print("bench: rendering reference for %s (%d spp)" % (name, cfg["ref_spp"]), file=sys.stderr, flush=True)
+                wall, _, _ = render(scene_path, ref, "path", cfg["ref_spp"], cfg["res"], args.threads, {},
+                                    os.path.join(work, "ref_stats.json"))
+                emit(dict(scene=name, method="reference", spp=cfg["ref_spp"], time_s=wall))
+            points = {"path": [], "rcache": []}
+            for spp in cfg["path_spp"]:
+                out = os.path.join(work, "path_%d.exr" % spp)
+                wall, mem, stats = render(scene_path, out, "path", spp, cfg["res"], args.threads, {},
+                                          os.path.join(work, "path_%d.json" % spp))
+                err = diff(out, ref)
+                p = dict(scene=name, method="path", setting="spp=%d" % spp, spp=spp, time_s=wall, relmse=err["relmse"],
+                         rmse=err["rmse"], peak_mib=mem, records=0, image=out)
+                points["path"].append(p)
+                emit(dict(p))
+            ladder = [("rays=%d,a=%g" % (s["rays"], s["a"]), {"rays": str(s["rays"]), "a": str(s["a"])}) for s in cfg["rcache"]]
+            mid = dict(ladder[len(ladder) // 2][1])
+            variants = [(label + "," + vlabel, dict(mid, **vdef)) for vlabel, vdef in cfg["variants"]
+                        for label in [ladder[len(ladder) // 2][0]]]
+            for label, defines in ladder + variants:
+                tag = label.replace("=", "").replace(",", "_")
+                out = os.path.join(work, "rcache_%s.exr" % tag)
+                wall, mem, stats = render(scene_path, out, "rcache", cfg["rcache_spp"], cfg["res"], args.threads, defines,
+                                          os.path.join(work, "rcache_%s.json" % tag))
+                err = diff(out, ref)
+                p = dict(scene=name, method="rcache", setting=label, time_s=wall, relmse=err["relmse"], rmse=err["rmse"],
+                         peak_mib=mem, records=stats.get("records", 0), image=out,
+                         ladder=(label, defines) in ladder)
+                if p["ladder"]:
+                    points["rcache"].append(p)
+                emit(dict(p))
+            # Time to reach the errors that both curves span.
+            best_rc = min(p["relmse"] for p in points["rcache"])
+            best_pt = min(p["relmse"] for p in points["path"])
+            targets = sorted({max(best_rc, best_pt) * f for f in (1.0, 2.0, 4.0)})
+            for target in targets:
+                t_rc = time_to_reach(points["rcache"], target)
+                t_pt = time_to_reach(points["path"], target)
+                ratio = (t_pt / t_rc) if (t_rc and t_pt) else None
+                rec = dict(scene=name, method="time_to_error", relmse_target=target, rcache_s=t_rc, path_s=t_pt,
+                           speedup_path_over_rcache=ratio)
+                emit(rec)
+                summary.append(rec)
+            if not args.no_plot:
+                plot_scene(name, points, os.path.join(args.out, "%s_error_vs_time.png" % name))
+                strip(name, points, ref, work, os.path.join(args.out, "%s_strip.png" % name))
+    print("bench: wrote %s" % jsonl_path, file=sys.stderr)
+
+
+def plot_scene(name, points, path):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("bench: matplotlib missing (apt-get install python3-matplotlib); no plot", file=sys.stderr)
+        return
+    fig, ax = plt.subplots(figsize=(5, 4), dpi=120)
+    for method, style in (("path", "o-"), ("rcache", "s-")):
+        pts = sorted((p["time_s"], p["relmse"]) for p in points[method])
+        if pts:
+            ax.loglog([t for t, _ in pts], [e for _, e in pts], style, label=method)
+    ax.set_xlabel("wall time (s)")
+    ax.set_ylabel("relMSE vs reference")
+    ax.set_title(name)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
+def strip(name, points, ref, work, path):
+    """Path tracer and rcache at (about) equal time, the reference, and their error heat maps."""
+    rc = points["rcache"][len(points["rcache"]) // 2] if points["rcache"] else None
+    if not rc or not points["path"]:
+        return
+    pt = min(points["path"], key=lambda p: abs(math.log(p["time_s"] / rc["time_s"])))
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        import matplotlib.image as mpimg
+    except ImportError:
+        return
+    tiles = []
+    for label, img in (("path %.1fs" % pt["time_s"], pt["image"]), ("rcache %.1fs" % rc["time_s"], rc["image"]),
+                       ("reference", ref)):
+        png = os.path.join(work, os.path.basename(img).replace(".exr", ".png"))
+        subprocess.run([RCACHE, "diff", img, ref, "--json", "--heatmap", png + ".heat.png"], check=True,
+                       capture_output=True)
+        convert_png(img, png)
+        tiles.append((label, png, png + ".heat.png" if img != ref else None))
+    fig, axes = plt.subplots(2, 3, figsize=(9, 6), dpi=100)
+    for col, (label, png, heat) in enumerate(tiles):
+        axes[0][col].imshow(mpimg.imread(png))
+        axes[0][col].set_title(label)
+        if heat:
+            axes[1][col].imshow(mpimg.imread(heat))
+            axes[1][col].set_title("rel. error")
+        for r in range(2):
+            axes[r][col].axis("off")
+    fig.suptitle("%s at equal time" % name)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
+def convert_png(exr, png):
+    """EXR → PNG via OpenImageIO's oiiotool when present (sRGB), else skipped."""
+    tool = shutil.which("oiiotool")
+    if tool:
+        subprocess.run([tool, exr, "--colorconvert", "linear", "sRGB", "-o", png], check=False, capture_output=True)
+
+
+if __name__ == "__main__":
+    main()

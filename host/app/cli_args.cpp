@@ -1,0 +1,146 @@
+#include "app/cli_args.h"
+
+#include <cerrno>
+#include <cstdlib>
+
+#include "core/error.h"
+
+namespace rc {
+
+const char* usageText() {
+  return "usage:\n"
+         "  rcache SCENE.xml [-o out.exr|png|hdr] [-D name=value]... [--integrator auto|rcache|path]\n"
+         "                   [--spp N] [--device cpu|opencl|opencl:P:D] [-t THREADS] [--seed S] [--quiet]\n"
+         "                   [--stats out.json] [--aov records,radius,technique,contributors]\n"
+         "                   [--cache-save F] [--cache-load F] [--lenient]\n"
+         "  rcache devices                       list OpenCL platforms and devices\n"
+         "  rcache verify [--device D] [--order N]   kernels vs scalar reference\n"
+         "  rcache diff A B [--json] [--heatmap out.png]   RMSE, relMSE, max abs error\n";
+}
+
+long long parseInteger(const std::string& flag, const std::string& text, long long lo, long long hi) {
+  errno = 0;
+  char* end = nullptr;
+  const long long v = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno == ERANGE)
+    throw Error(flag + ": expected an integer, got '" + text + "'");
+  if (v < lo || v > hi)
+    throw Error(flag + ": " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return v;
+}
+
+namespace {
+
+// Walks argv with one-token lookahead so "--flag value" errors can name the flag.
+class ArgCursor {
+ public:
+  explicit ArgCursor(const std::vector<std::string>& args) : args_(args) {}
+  bool done() const { return i_ >= args_.size(); }
+  const std::string& next() { return args_[i_++]; }
+  std::string value(const std::string& flag) {
+    if (done()) throw Error(flag + ": missing value");
+    return next();
+  }
+
+ private:
+  const std::vector<std::string>& args_;
+  size_t i_ = 0;
+};
+
+std::vector<std::string> splitCommas(const std::string& text) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (!item.empty()) out.push_back(item);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
+  RenderArgs r;
+  ArgCursor cur(args);
+  while (!cur.done()) {
+    const std::string a = cur.next();
+    if (a == "-o" || a == "--output") {
+      r.outputPath = cur.value(a);
+    } else if (a == "-D") {
+      const std::string kv = cur.value(a);
+      const size_t eq = kv.find('=');
+      if (eq == std::string::npos || eq == 0) throw Error("-D: expected name=value, got '" + kv + "'");
+      r.defines[kv.substr(0, eq)] = kv.substr(eq + 1);
+    } else if (a == "--integrator") {
+      r.integrator = cur.value(a);
+      if (r.integrator != "auto" && r.integrator != "rcache" && r.integrator != "path")
+        throw Error("--integrator: expected auto, rcache or path, got '" + r.integrator + "'");
+    } else if (a == "--spp") {
+      r.spp = static_cast<int>(parseInteger(a, cur.value(a), 1, 1 << 20));
+    } else if (a == "--device") {
+      r.device = cur.value(a);
+    } else if (a == "-t" || a == "--threads") {
+      r.threads = static_cast<int>(parseInteger(a, cur.value(a), 1, 1024));
+    } else if (a == "--seed") {
+      r.seed = static_cast<uint64_t>(parseInteger(a, cur.value(a), 0, (1LL << 62)));
+    } else if (a == "--quiet" || a == "-q") {
+      r.quiet = true;
+    } else if (a == "--lenient") {
+      r.lenient = true;
+    } else if (a == "--stats") {
+      r.statsPath = cur.value(a);
+    } else if (a == "--aov") {
+      for (const std::string& name : splitCommas(cur.value(a))) {
+        if (name != "records" && name != "radius" && name != "technique" && name != "contributors")
+          throw Error("--aov: unknown AOV '" + name + "' (known: records, radius, technique, contributors)");
+        r.aovs.push_back(name);
+      }
+    } else if (a == "--cache-save") {
+      r.cacheSave = cur.value(a);
+    } else if (a == "--cache-load") {
+      r.cacheLoad = cur.value(a);
+    } else if (!a.empty() && a[0] == '-') {
+      throw Error("unknown option '" + a + "'");
+    } else if (r.scenePath.empty()) {
+      r.scenePath = a;
+    } else {
+      throw Error("unexpected argument '" + a + "' (scene already given: '" + r.scenePath + "')");
+    }
+  }
+  if (r.scenePath.empty()) throw Error("no scene file given");
+  return r;
+}
+
+DiffArgs parseDiffArgs(const std::vector<std::string>& args) {
+  DiffArgs d;
+  ArgCursor cur(args);
+  std::vector<std::string> files;
+  while (!cur.done()) {
+    const std::string a = cur.next();
+    if (a == "--json") d.json = true;
+    else if (a == "--heatmap") d.heatmap = cur.value(a);
+    else if (!a.empty() && a[0] == '-') throw Error("diff: unknown option '" + a + "'");
+    else files.push_back(a);
+  }
+  if (files.size() != 2) throw Error("diff: expected two images (test reference), got " + std::to_string(files.size()));
+  d.a = files[0];
+  d.b = files[1];
+  return d;
+}
+
+VerifyArgs parseVerifyArgs(const std::vector<std::string>& args) {
+  VerifyArgs v;
+  ArgCursor cur(args);
+  while (!cur.done()) {
+    const std::string a = cur.next();
+    if (a == "--device") v.device = cur.value(a);
+    else if (a == "--order") v.order = static_cast<int>(parseInteger(a, cur.value(a), 1, 16));
+    else throw Error("verify: unknown argument '" + a + "'");
+  }
+  return v;
+}
+
+}  // namespace rc

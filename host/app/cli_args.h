@@ -1,0 +1,46 @@
+#pragma once
+// Command-line options of `rcache SCENE.xml` (DESIGN §5), parsed strictly: an unknown flag, a
+// missing value or an absurd number is an rc::Error that names the flag.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rc {
+
+struct RenderArgs {
+  std::string scenePath;
+  std::string outputPath;                      // empty → next to the scene: SCENE.exr
+  std::map<std::string, std::string> defines;  // -D name=value
+  std::string integrator = "auto";             // auto | rcache | path
+  int spp = 0;                                 // 0 → scene's sample_count
+  std::string device;                          // "" → RC_DEVICE or auto
+  int threads = 0;                             // 0 → all hardware threads
+  uint64_t seed = 0;
+  bool quiet = false;
+  bool lenient = false;
+  std::string statsPath;
+  std::vector<std::string> aovs;
+  std::string cacheSave, cacheLoad;
+};
+
+struct DiffArgs {
+  std::string a, b, heatmap;
+  bool json = false;
+};
+
+struct VerifyArgs {
+  std::string device = "opencl";
+  int order = 0;  // 0 = the standard set
+};
+
+RenderArgs parseRenderArgs(const std::vector<std::string>& args);
+DiffArgs parseDiffArgs(const std::vector<std::string>& args);
+VerifyArgs parseVerifyArgs(const std::vector<std::string>& args);
+
+// Strict number parsing shared by the parsers: the whole string must be a number in [lo, hi].
+long long parseInteger(const std::string& flag, const std::string& text, long long lo, long long hi);
+
+const char* usageText();
+
+}  // namespace rc

@@ -1,0 +1,229 @@
+#include "brdf/material_plan.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "brdf/order_selection.h"
+#include "brdf/table_builder.h"
+#include "brdf/table_cache.h"
+#include "brdf/table_layout.h"
+#include "core/error.h"
+
+namespace rc {
+
+namespace {
+
+std::string hexFloat(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%a", v);
+  return buf;
+}
+
+std::string quadKey(const LobeQuadrature& q) {
+  return "quad=" + std::to_string(q.bsdfSamples) + "/" + std::to_string(q.cosineSamples);
+}
+
+std::string jsonEscape(const std::string& s) {
+  std::string o;
+  for (char ch : s) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    if (c == '"' || c == '\\') {
+      o += '\\';
+      o += ch;
+    } else if (c < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      o += buf;
+    } else {
+      o += ch;
+    }
+  }
+  return o;
+}
+
+enum class Kind { Sampled, Diffuse, Glossy };
+
+Kind classify(const Bsdf& bsdf) {
+  const uint32_t lobes = bsdf.lobes();
+  if (lobes & (kLobeDelta | kLobeTransmission)) return Kind::Sampled;
+  if (lobes == kLobeDiffuse) return Kind::Diffuse;
+  if (lobes & kLobeGlossy) return Kind::Glossy;
+  return Kind::Sampled;  // no continuous reflection lobe: nothing to cache
+}
+
+}  // namespace
+
+void BrdfTableSet::build(const std::vector<BsdfPtr>& bsdfs, const BrdfTableOptions& opt) {
+  plans_.clear();
+  tables_.clear();
+  data_.clear();
+  cacheDir_.clear();
+  if (opt.maxOrder < 1 || opt.maxOrder > kMaxKernelOrder)
+    throw Error("brdf tables: max SH order " + std::to_string(opt.maxOrder) + " outside 1.." + std::to_string(kMaxKernelOrder));
+  if (opt.orderOverride < 0 || opt.orderOverride > kMaxKernelOrder)
+    throw Error("brdf tables: SH order " + std::to_string(opt.orderOverride) + " outside 1.." + std::to_string(kMaxKernelOrder));
+  if (opt.diffuseOrder < 1 || opt.diffuseOrder > kMaxKernelOrder)
+    throw Error("brdf tables: diffuse SH order " + std::to_string(opt.diffuseOrder) + " outside 1.." + std::to_string(kMaxKernelOrder));
+  if (!(opt.tolerance > 0.0 && opt.tolerance < 1.0))
+    throw Error("brdf tables: tolerance " + std::to_string(opt.tolerance) + " outside (0, 1)");
+  if (opt.isotropicRes < 2 || opt.anisotropicRes < 2 || opt.diffuseRes < 2)
+    throw Error("brdf tables: table resolutions must be at least 2");
+
+  auto notice = opt.notice ? opt.notice : [](const std::string& m) { std::cerr << m << "\n"; };
+  std::vector<Kind> kinds;
+  bool anyCached = false;
+  for (const BsdfPtr& b : bsdfs) {
+    if (!b) throw Error("brdf tables: null BSDF in the scene's list");
+    kinds.push_back(classify(*b));
+    anyCached = anyCached || kinds.back() != Kind::Sampled;
+  }
+
+  std::unique_ptr<BrdfDiskCache> cache;
+  if (anyCached && opt.useDiskCache) {
+    cache = std::make_unique<BrdfDiskCache>(opt.cacheDir, notice);
+    if (cache->enabled()) cacheDir_ = cache->directory();
+  }
+  auto load = [&](const std::string& key, CachedBlob& blob) {
+    return cache && !opt.forceRebuild && cache->load(key, blob);
+  };
+  auto store = [&](const std::string& key, const CachedBlob& blob) {
+    if (cache) cache->store(key, blob);
+  };
+
+  std::map<std::string, int> tableByKey;  // equal parameter keys share one table
+  for (size_t m = 0; m < bsdfs.size(); ++m) {
+    const Bsdf& bsdf = *bsdfs[m];
+    const auto start = std::chrono::steady_clock::now();
+    MaterialPlan plan;
+    plan.name = bsdf.id.empty() ? bsdf.typeName() : bsdf.id;
+    plan.technique = kTechniqueImportanceSampling;
+    if (kinds[m] == Kind::Sampled) {
+      plans_.push_back(plan);
+      continue;
+    }
+    const std::string base = "rcache brdf table v" + std::to_string(kBrdfCacheFormatVersion) + "\n" + bsdf.parameterKey();
+    bool hit = true;
+    int order = 0;
+    if (kinds[m] == Kind::Diffuse) {
+      plan.technique = kTechniqueIrradianceCache;
+      order = opt.diffuseOrder;
+    } else if (opt.orderOverride > 0) {
+      plan.technique = kTechniqueRadianceCache;
+      order = opt.orderOverride;
+    } else {
+      const std::string planKey = base + "\nplan tol=" + hexFloat(opt.tolerance) + " theta=" + hexFloat(opt.planMaxThetaDeg) + " max=" +
+                                  std::to_string(opt.maxOrder) + " " + quadKey(opt.planQuadrature);
+      CachedBlob blob;
+      std::vector<double> worst;
+      if (load(planKey, blob) && blob.kind == -1 && blob.res == opt.maxOrder &&
+          blob.payload.size() == static_cast<size_t>(opt.maxOrder) && blob.order >= 0 && blob.order <= opt.maxOrder) {
+        order = blob.order;
+        worst.assign(blob.payload.begin(), blob.payload.end());
+      } else {
+        hit = false;
+        const OrderChoice choice = selectShOrder(bsdf, opt.tolerance, opt.maxOrder, opt.planQuadrature, opt.planMaxThetaDeg);
+        order = choice.order;
+        worst = choice.worstError;
+        blob.kind = -1;
+        blob.order = order;
+        blob.res = opt.maxOrder;
+        blob.payload.assign(worst.begin(), worst.end());
+        store(planKey, blob);
+      }
+      if (order == 0) {  // too sharp for the cap
+        plan.truncationError = worst.empty() ? 0.0 : worst.back();
+        plan.tableCacheHit = hit;
+        plan.tableMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        plans_.push_back(plan);
+        continue;
+      }
+      plan.technique = kTechniqueRadianceCache;
+      plan.truncationError = worst[order - 1];
+    }
+
+    const int kind = bsdf.isotropic() ? RC_TABLE_ISOTROPIC_1D : RC_TABLE_ANISOTROPIC_2D;
+    const int res = kinds[m] == Kind::Diffuse ? opt.diffuseRes
+                    : kind == RC_TABLE_ISOTROPIC_1D ? opt.isotropicRes
+                                                    : opt.anisotropicRes;
+    const LobeQuadrature& quad = kind == RC_TABLE_ANISOTROPIC_2D ? opt.anisotropicQuadrature : opt.tableQuadrature;
+    const std::string tableKey = base + "\ntable kind=" + std::to_string(kind) + " res=" + std::to_string(res) +
+                                 " order=" + std::to_string(order) + " " + quadKey(quad);
+    plan.shOrder = order;
+    plan.tableKind = kind;
+    if (auto it = tableByKey.find(tableKey); it != tableByKey.end()) {
+      plan.tableIndex = it->second;  // same parameters as an earlier material
+    } else {
+      const size_t count = tableFloatCount(kind, order, res);
+      CachedBlob blob;
+      if (!(load(tableKey, blob) && blob.kind == kind && blob.order == order && blob.res == res &&
+            blob.payload.size() == count)) {
+        hit = false;
+        blob.kind = kind;
+        blob.order = order;
+        blob.res = res;
+        blob.payload = buildBrdfTable(bsdf, kind, order, res, quad);
+        store(tableKey, blob);
+      }
+      RcBrdfTable t;
+      t.kind = kind;
+      t.order = order;
+      t.res = res;
+      if (data_.size() + count > static_cast<size_t>(INT32_MAX))
+        throw Error("brdf tables: table data exceeds 2^31 floats");
+      t.offset = static_cast<int32_t>(data_.size());
+      data_.insert(data_.end(), blob.payload.begin(), blob.payload.end());
+      plan.tableIndex = static_cast<int>(tables_.size());
+      tables_.push_back(t);
+      tableByKey[tableKey] = plan.tableIndex;
+    }
+    plan.tableCacheHit = hit;
+    plan.tableMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    plans_.push_back(plan);
+  }
+}
+
+int BrdfTableSet::maxTableOrder() const {
+  int n = 0;
+  for (const RcBrdfTable& t : tables_) n = std::max(n, t.order);
+  return n;
+}
+
+void BrdfTableSet::fillBatch(BrdfDotBatch& batch) const {
+  batch.tables = tables_;
+  batch.tableData = data_;
+}
+
+void BrdfTableSet::lookup(int tableIndex, const Vec3& wo, std::vector<double>& out) const {
+  if (tableIndex < 0 || tableIndex >= static_cast<int>(tables_.size()))
+    throw Error("brdf tables: table index " + std::to_string(tableIndex) + " out of range");
+  const RcBrdfTable& t = tables_[tableIndex];
+  lookupTable(t, data_.data() + t.offset, wo, out);
+}
+
+std::string BrdfTableSet::materialsJson() const {
+  std::ostringstream o;
+  o << "[";
+  for (size_t i = 0; i < plans_.size(); ++i) {
+    const MaterialPlan& p = plans_[i];
+    char ms[32];
+    std::snprintf(ms, sizeof ms, "%.3f", p.tableMs);
+    o << (i ? ", " : "") << "{\"name\": \"" << jsonEscape(p.name) << "\", \"technique\": \"" << jsonEscape(p.technique)
+      << "\", \"sh_order\": " << p.shOrder << ", \"table_ms\": " << ms
+      << ", \"table_cache_hit\": " << (p.tableCacheHit ? "true" : "false") << "}";
+  }
+  o << "]";
+  return o.str();
+}
+
+double BrdfTableSet::totalMs() const {
+  double s = 0;
+  for (const MaterialPlan& p : plans_) s += p.tableMs;
+  return s;
+}
+
+}  // namespace rc

@@ -1,0 +1,62 @@
+#pragma once
+// BSDF interface. All directions are unit vectors in the local shading frame (z = shading normal).
+// Naming follows the light-transport convention used by pbrt: `wo` points toward the viewer (the
+// direction light leaves along), `wi` toward the light (the direction light arrives from).
+// One-sided BSDFs (everything except `twosided` wrappers and `dielectric`) are black unless
+// wo.z > 0 and (for reflection) wi.z > 0, exactly as Mitsuba 3.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/math.h"
+
+namespace rc {
+
+enum BsdfLobe : uint32_t {
+  kLobeDiffuse = 1u << 0,  // Lambertian-like, view-independent
+  kLobeGlossy = 1u << 1,   // rough microfacet
+  kLobeDelta = 1u << 2,    // Dirac (smooth conductor/dielectric/plastic specular part)
+  kLobeTransmission = 1u << 3,
+};
+
+struct BsdfSample {
+  Vec3 wi;              // sampled incoming direction (local)
+  Color weight{0.0f};   // f·|cos θi| / pdf (for a delta lobe: the full throughput factor)
+  float pdf = 0.0f;     // solid-angle density of the continuous part; 0 for a delta sample
+  uint32_t lobe = 0;    // which lobe produced it (one BsdfLobe bit)
+  float eta = 1.0f;     // relative IOR crossed (dielectric transmission), else 1
+};
+
+class Bsdf {
+ public:
+  virtual ~Bsdf() = default;
+
+  // f(wo, wi)·|cos θi|, excluding Dirac components.
+  virtual Color eval(const Vec3& wo, const Vec3& wi) const = 0;
+  // Solid-angle pdf with which sample() returns wi for the continuous lobes (0 for delta-only).
+  virtual float pdf(const Vec3& wo, const Vec3& wi) const = 0;
+  // Importance-samples wi; u1 picks a lobe, u2 the direction. Empty when no valid sample.
+  virtual std::optional<BsdfSample> sample(const Vec3& wo, float u1, const Vec2& u2) const = 0;
+
+  virtual uint32_t lobes() const = 0;  // BsdfLobe bits present
+  bool hasDelta() const { return lobes() & kLobeDelta; }
+  bool isDiffuseOnly() const { return lobes() == kLobeDiffuse; }
+
+  // Sharpness of the narrowest glossy lobe as an effective microfacet alpha (min of alpha_u/v);
+  // +∞ when there is no glossy lobe. Used to choose the technique and SH order per material.
+  virtual float glossyAlpha() const { return INFINITY; }
+  // True when eval is invariant under rotation of (wo, wi) about the normal.
+  virtual bool isotropic() const { return true; }
+
+  // Canonical text of the type and every parameter value (hex floats): the key of cached
+  // BRDF coefficient tables. Two BSDFs with equal keys have identical eval().
+  virtual std::string parameterKey() const = 0;
+  virtual std::string typeName() const = 0;
+
+  std::string id;  // the scene's id attribute, or "<type>#<n>" when anonymous
+};
+
+using BsdfPtr = std::shared_ptr<const Bsdf>;
+
+}  // namespace rc

@@ -1,0 +1,36 @@
+#include "bsdf/conductor_fresnel.h"
+
+#include "bsdf/bsdf_params.h"
+
+namespace rc {
+
+static Color readFiniteNonNegative(const Properties& props, const std::string& name, float fallback) {
+  const Color c = props.getColor(name, Color(fallback));
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(c[i]) || c[i] < 0.0f)
+      throwParamError(props, name, "components must be finite and non-negative (NaN or negative given)");
+  return c;
+}
+
+ConductorFresnel readConductorFresnel(const Properties& props) {
+  ConductorFresnel f;
+  f.specularReflectance = readReflectance(props, "specular_reflectance", 1.0f);
+  const std::string material = props.getString("material", "none");
+  if (material != "none") {
+    if (props.has("eta") || props.has("k"))
+      throwParamError(props, "material", "give either 'eta'/'k' or 'material', not both");
+    throwParamError(props, "material",
+                    "unsupported material preset '" + material +
+                        "' (Mitsuba derives its RGB values from spectral data files not shipped here); "
+                        "give 'eta' and 'k' as rgb values, or material \"none\" for F = 1");
+  }
+  f.eta = readFiniteNonNegative(props, "eta", 0.0f);
+  f.k = readFiniteNonNegative(props, "k", 1.0f);
+  return f;
+}
+
+std::string ConductorFresnel::key() const {
+  return "eta=" + hexColor(eta) + ";k=" + hexColor(k) + ";specular_reflectance=" + hexColor(specularReflectance);
+}
+
+}  // namespace rc

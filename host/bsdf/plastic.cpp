@@ -1,0 +1,100 @@
+// bsdf "plastic": smooth dielectric coating over a diffuse base (Mitsuba 3 src/bsdfs/plastic.cpp).
+//
+// | parameter            | type               | default       | meaning                                    |
+// |----------------------|--------------------|---------------|--------------------------------------------|
+// | diffuse_reflectance  | rgb / float        | 0.5           | ρ of the base layer                         |
+// | specular_reflectance | rgb / float        | 1             | multiplier s of the coating's reflection    |
+// | int_ior              | float / IOR name   | polypropylene (1.49) | interior IOR                        |
+// | ext_ior              | float / IOR name   | air (1.000277)       | exterior IOR                        |
+// | nonlinear            | boolean            | false         | ρ/(1 − ρ·Fdr) instead of ρ/(1 − Fdr)        |
+//
+// Delta reflection s·F(θo) plus a diffuse lobe that accounts for the light trapped under the coating:
+//   f_d·cosθi = ρ/(1 − Fdr_int)·(1/η²)·(1 − F(θo))·(1 − F(θi))·cosθi/π, η = int/ext,
+// Fdr_int = fresnelDiffuseReflectance(1/η). Lobe choice: p_spec ∝ F(θo)·w_s, p_diff ∝ (1 − F(θo))·(1 − w_s),
+// w_s = mean(s)/(mean(ρ) + mean(s)).
+#include "bsdf/bsdf_params.h"
+#include "bsdf/fresnel.h"
+#include "bsdf/plugins.h"
+#include "bsdf/warp.h"
+
+namespace rc {
+namespace {
+
+inline float meanOf(const Color& c) { return (c.r + c.g + c.b) / 3.0f; }
+
+class PlasticBsdf final : public Bsdf {
+ public:
+  PlasticBsdf(const Color& diffuse, const Color& specular, float eta, bool nonlinear)
+      : diffuse_(diffuse), specular_(specular), eta_(eta), nonlinear_(nonlinear) {
+    invEta2_ = 1.0f / (eta * eta);
+    fdrInt_ = fresnelDiffuseReflectance(1.0f / eta);
+    const float dMean = meanOf(diffuse), sMean = meanOf(specular);
+    specularSamplingWeight_ = sMean / (dMean + sMean);
+    const Color denom = nonlinear ? Color(1.0f) - diffuse * fdrInt_ : Color(1.0f - fdrInt_);
+    diffuseScaled_ = diffuse / denom;
+  }
+
+  Color eval(const Vec3& wo, const Vec3& wi) const override {
+    if (!(wo.z > 0.0f && wi.z > 0.0f)) return Color(0.0f);
+    const float fo = fresnelDielectric(wo.z, eta_).r, fi = fresnelDielectric(wi.z, eta_).r;
+    return diffuseScaled_ * (squareToCosineHemispherePdf(wi) * invEta2_ * (1.0f - fo) * (1.0f - fi));
+  }
+  float pdf(const Vec3& wo, const Vec3& wi) const override {
+    if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
+    return squareToCosineHemispherePdf(wi) * probDiffuse(fresnelDielectric(wo.z, eta_).r);
+  }
+  std::optional<BsdfSample> sample(const Vec3& wo, float u1, const Vec2& u2) const override {
+    if (!(wo.z > 0.0f)) return std::nullopt;
+    const float fo = fresnelDielectric(wo.z, eta_).r;
+    const float pDiff = probDiffuse(fo), pSpec = 1.0f - pDiff;
+    BsdfSample s;
+    if (u1 < pSpec) {
+      s.wi = reflectZ(wo);
+      s.pdf = 0.0f;
+      s.weight = specular_ * (fo / pSpec);
+      s.lobe = kLobeDelta;
+      return s;
+    }
+    s.wi = squareToCosineHemisphere(u2);
+    s.pdf = pDiff * squareToCosineHemispherePdf(s.wi);
+    if (!(s.pdf > 0.0f)) return std::nullopt;
+    const float fi = fresnelDielectric(s.wi.z, eta_).r;
+    s.weight = diffuseScaled_ * (invEta2_ * (1.0f - fo) * (1.0f - fi) / pDiff);
+    s.lobe = kLobeDiffuse;
+    return s;
+  }
+  uint32_t lobes() const override { return kLobeDiffuse | kLobeDelta; }
+  std::string parameterKey() const override {
+    return "plastic(diffuse_reflectance=" + hexColor(diffuse_) + ";specular_reflectance=" + hexColor(specular_) +
+           ";eta=" + hexFloat(eta_) + ";nonlinear=" + (nonlinear_ ? "1" : "0") + ")";
+  }
+  std::string typeName() const override { return "plastic"; }
+
+ private:
+  float probDiffuse(float fo) const {
+    const float pSpec = fo * specularSamplingWeight_, pDiff = (1.0f - fo) * (1.0f - specularSamplingWeight_);
+    const float sum = pSpec + pDiff;
+    return sum > 0.0f ? pDiff / sum : 0.0f;  // sum = 0 only for a black, index-matched coating
+  }
+
+  Color diffuse_, specular_;
+  float eta_;
+  bool nonlinear_;
+  float invEta2_ = 1.0f, fdrInt_ = 0.0f, specularSamplingWeight_ = 0.5f;
+  Color diffuseScaled_{0.0f};
+};
+
+}  // namespace
+
+std::shared_ptr<Bsdf> createPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>&) {
+  const Color diffuse = readReflectance(props, "diffuse_reflectance", 0.5f);
+  const Color specular = readReflectance(props, "specular_reflectance", 1.0f);
+  const float intIor = readIor(props, "int_ior", "polypropylene");
+  const float extIor = readIor(props, "ext_ior", "air");
+  const bool nonlinear = props.getBool("nonlinear", false);
+  if (meanOf(diffuse) + meanOf(specular) <= 0.0f)
+    throwParamError(props, "diffuse_reflectance", "diffuse and specular reflectance are both zero");
+  return std::make_shared<PlasticBsdf>(diffuse, specular, intIor / extIor, nonlinear);
+}
+
+}  // namespace rc

@@ -1,0 +1,22 @@
+#pragma once
+// Constructors of the BSDF plugins, one per file, gathered by the factory table (bsdf_factory.cpp).
+// Each reads its parameters from `props` (validating them) and takes ownership of `nested`.
+#include <vector>
+
+#include "bsdf/bsdf.h"
+#include "core/properties.h"
+
+namespace rc {
+
+using BsdfConstructor = std::shared_ptr<Bsdf> (*)(const Properties& props, const std::vector<BsdfPtr>& nested);
+
+std::shared_ptr<Bsdf> createDiffuseBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+std::shared_ptr<Bsdf> createRoughConductorBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+std::shared_ptr<Bsdf> createConductorBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+std::shared_ptr<Bsdf> createPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+std::shared_ptr<Bsdf> createRoughPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+std::shared_ptr<Bsdf> createDielectricBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+std::shared_ptr<Bsdf> createTwoSidedBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+std::shared_ptr<Bsdf> createBlendBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+
+}  // namespace rc

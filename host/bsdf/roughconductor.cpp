@@ -1,0 +1,81 @@
+// bsdf "roughconductor": microfacet reflection from a rough metal (Mitsuba 3 src/bsdfs/roughconductor.cpp).
+//
+// | parameter            | type        | default   | meaning                                        |
+// |----------------------|-------------|-----------|------------------------------------------------|
+// | distribution         | string      | beckmann  | "beckmann" or "ggx"                            |
+// | alpha                | float       | 0.1       | isotropic roughness (> 0)                      |
+// | alpha_u, alpha_v     | float       | —         | anisotropic roughness along the frame's t / b  |
+// | sample_visible       | boolean     | true      | sample visible normals (else all normals)      |
+// | material             | string      | none      | "none" = F ≡ 1; named presets unsupported      |
+// | eta, k               | rgb / float | 0, 1      | complex relative IOR (eta 0, k 1 gives F ≡ 1)  |
+// | specular_reflectance | rgb / float | 1         | multiplier s                                    |
+//
+// f(wo, wi) = s·F(wo·h)·D(h)·G1(wo,h)·G1(wi,h) / (4 cosθo cosθi), h = normalize(wo + wi).
+#include "bsdf/bsdf_params.h"
+#include "bsdf/conductor_fresnel.h"
+#include "bsdf/microfacet.h"
+#include "bsdf/plugins.h"
+
+namespace rc {
+namespace {
+
+class RoughConductorBsdf final : public Bsdf {
+ public:
+  RoughConductorBsdf(const Microfacet& distr, const ConductorFresnel& fresnel) : distr_(distr), fresnel_(fresnel) {}
+
+  Color eval(const Vec3& wo, const Vec3& wi) const override {
+    if (!(wo.z > 0.0f && wi.z > 0.0f)) return Color(0.0f);
+    const Vec3 h = glm::normalize(wo + wi);
+    const float d = distr_.D(h);
+    if (d == 0.0f) return Color(0.0f);
+    const float g = distr_.G(wo, wi, h);
+    return fresnel_.eval(glm::dot(wo, h)) * (d * g / (4.0f * wo.z));
+  }
+
+  float pdf(const Vec3& wo, const Vec3& wi) const override {
+    if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
+    const Vec3 m = glm::normalize(wo + wi);
+    if (!(glm::dot(wo, m) > 0.0f && glm::dot(wi, m) > 0.0f)) return 0.0f;
+    // Jacobian of the reflection map dωm/dωi = 1/(4 |wi·m|).
+    if (distr_.sampleVisible()) return distr_.D(m) * distr_.smithG1(wo, m) / (4.0f * wo.z);
+    return distr_.pdf(wo, m) / (4.0f * glm::dot(wi, m));
+  }
+
+  std::optional<BsdfSample> sample(const Vec3& wo, float, const Vec2& u2) const override {
+    if (!(wo.z > 0.0f)) return std::nullopt;
+    const auto [m, pdfM] = distr_.sample(wo, u2);
+    const Vec3 wi = 2.0f * glm::dot(wo, m) * m - wo;
+    if (!(pdfM > 0.0f) || !(wi.z > 0.0f)) return std::nullopt;
+    BsdfSample s;
+    s.wi = wi;
+    // Visible-normal sampling leaves only the shadowing term of the outgoing direction.
+    const float weight = distr_.sampleVisible() ? distr_.smithG1(wi, m)
+                                                : distr_.G(wo, wi, m) * glm::dot(wo, m) / (wo.z * m.z);
+    s.pdf = pdfM / (4.0f * glm::dot(wi, m));
+    if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return std::nullopt;
+    s.weight = fresnel_.eval(glm::dot(wo, m)) * weight;
+    s.lobe = kLobeGlossy;
+    return s;
+  }
+
+  uint32_t lobes() const override { return kLobeGlossy; }
+  float glossyAlpha() const override { return std::fmin(distr_.alphaU(), distr_.alphaV()); }
+  bool isotropic() const override { return distr_.isotropic(); }
+  std::string parameterKey() const override {
+    return "roughconductor(distr=" + distr_.key() + ";" + fresnel_.key() + ")";
+  }
+  std::string typeName() const override { return "roughconductor"; }
+
+ private:
+  Microfacet distr_;
+  ConductorFresnel fresnel_;
+};
+
+}  // namespace
+
+std::shared_ptr<Bsdf> createRoughConductorBsdf(const Properties& props, const std::vector<BsdfPtr>&) {
+  const Microfacet distr = readMicrofacet(props, true);
+  return std::make_shared<RoughConductorBsdf>(distr, readConductorFresnel(props));
+}
+
+}  // namespace rc

@@ -1,0 +1,644 @@
+#include "cache/cache_engine.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "cache/record_octree.h"
+#include "cl/sh_backend.h"
+#include "core/error.h"
+#include "core/parallel.h"
+#include "core/rng.h"
+#include "render/direct_light.h"
+#include "sh/sh_basis.h"
+
+namespace rc {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Interpolation/shading runs in chunks so that Λ of a chunk ([P][3][n²] floats) stays small
+// (4096 points at order 16 = 12 MB) however many points a batch of records produced.
+constexpr size_t kChunk = 4096;
+// Paths longer than this are cut (only reachable through chains of delta lobes that Russian
+// roulette has not yet ended; probability < 0.95^990).
+constexpr int kHardDepthLimit = 1000;
+
+void frameRows(const Frame& f, float* out) {
+  const Vec3 rows[3] = {f.t, f.b, f.n};
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) out[3 * r + c] = rows[r][c];
+}
+
+}  // namespace
+
+CacheEngine::CacheEngine(const RenderContext& ctx, const RcacheParams& params, const BrdfTableSet& tables,
+                         const CameraModel& camera, int maxDepth, int rrDepth, Vec3 sceneLo, Vec3 sceneHi)
+    : ctx_(ctx), params_(params), tables_(tables), camera_(camera), maxDepth_(maxDepth), rrDepth_(rrDepth),
+      lo_(sceneLo), hi_(sceneHi) {
+  const auto& bsdfs = ctx.scene.bsdfs;
+  const auto& plans = tables.plans();
+  planTech_.assign(bsdfs.size(), 0);
+  planOrder_.assign(bsdfs.size(), 0);
+  twoSided_.assign(bsdfs.size(), false);
+  for (size_t i = 0; i < bsdfs.size(); ++i) {
+    twoSided_[i] = bsdfs[i]->typeName() == "twosided";
+    const MaterialPlan* plan = i < plans.size() ? &plans[i] : nullptr;
+    if (plan && plan->tableIndex >= 0 &&
+        (plan->technique == kTechniqueRadianceCache || plan->technique == kTechniqueIrradianceCache)) {
+      planTech_[i] = 1;
+      // Records of a material have its table's order; the TL approximation needs only the
+      // irradiance and the dominant direction (bands 0..2).
+      planOrder_[i] = params.tlMode ? 3 : plan->shOrder;
+    } else {
+      planTech_[i] = 2;
+    }
+  }
+}
+
+float CacheEngine::footprint(const Vec3& p) const {
+  return camera_.pixelFootprint(std::max(glm::length(p - camera_.position()), 1e-6f));
+}
+
+float CacheEngine::aForLevel(int level) const { return params_.a * std::pow(params_.secondaryAScale, float(level)); }
+
+int CacheEngine::technique(const ShadePoint& sp) const {
+  if (!sp.active || sp.hit.bsdf < 0) return 0;
+  const int t = planTech_[static_cast<size_t>(sp.hit.bsdf)];
+  if (t == 1) {
+    if (sp.wo.z <= 0.0f) return 0;  // back of a one-sided BSDF: black
+    if (sp.level >= params_.cacheDepth) return 2;
+  }
+  return t;
+}
+
+CacheKey CacheEngine::keyFor(const ShadePoint& sp) const {
+  CacheKey k;
+  k.level = sp.level;
+  k.depth = maxDepth_ < 0 ? 0 : sp.depth;
+  k.order = planOrder_[static_cast<size_t>(sp.hit.bsdf)];
+  return k;
+}
+
+RadianceCache& CacheEngine::cacheFor(const CacheKey& key) {
+  auto it = caches_.find(key);
+  if (it == caches_.end()) it = caches_.emplace(key, std::make_unique<RadianceCache>(key.order, lo_, hi_)).first;
+  return *it->second;
+}
+
+void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Color>& out) {
+  out.assign(pts.size(), Color(0.0f));
+  parallelFor(pts.size(), 64, [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      const ShadePoint& sp = pts[i];
+      if (!sp.active) continue;
+      if (maxDepth_ >= 0 && sp.depth + 1 > maxDepth_) continue;
+      Rng rng(sp.seed, 1);
+      const Color L = directLight(ctx_, sp.hit, sp.frame, sp.wo, *ctx_.scene.bsdfs[sp.hit.bsdf], rng);
+      if (isFinite(L)) out[i] = L;
+    }
+  });
+  std::vector<Color> ind;
+  indirect(pts, ind);
+  for (size_t i = 0; i < pts.size(); ++i) out[i] += ind[i];
+}
+
+void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color>& out, std::vector<LookupAov>* aov) {
+  out.assign(pts.size(), Color(0.0f));
+  if (aov) aov->assign(pts.size(), LookupAov{});
+  std::map<CacheKey, std::vector<size_t>> groups;
+  std::vector<size_t> sampled;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const ShadePoint& sp = pts[i];
+    if (maxDepth_ >= 0 && sp.depth + 2 > maxDepth_) continue;
+    if (sp.depth >= kHardDepthLimit) continue;
+    const int t = technique(sp);
+    if (t == 1) groups[keyFor(sp)].push_back(i);
+    else if (t == 2) sampled.push_back(i);
+  }
+  for (auto& [key, idx] : groups) {
+    std::vector<ShadePoint> sub(idx.size());
+    for (size_t j = 0; j < idx.size(); ++j) sub[j] = pts[idx[j]];
+    std::vector<Lookup> lookups;
+    ensureCoverage(key, sub, lookups, nullptr, false);
+    std::vector<Color> L;
+    interpolateAndShade(key, sub, lookups, L);
+    RadianceCache& cache = cacheFor(key);
+    for (size_t j = 0; j < idx.size(); ++j) {
+      out[idx[j]] = L[j];
+      if (aov) {
+        LookupAov& a = (*aov)[idx[j]];
+        a.contributors = static_cast<int>(lookups[j].entries.size());
+        for (const auto& e : lookups[j].entries) {
+          const RecordInfo r = cache.info(static_cast<uint32_t>(e.record));
+          a.meanA += r.a;
+          a.meanRadiusPx += r.a * r.R / footprint(r.p);
+        }
+        if (a.contributors > 0) {
+          a.meanA /= a.contributors;
+          a.meanRadiusPx /= a.contributors;
+        }
+      }
+    }
+  }
+  if (!sampled.empty()) {
+    std::vector<ShadePoint> sub(sampled.size());
+    for (size_t j = 0; j < sampled.size(); ++j) sub[j] = pts[sampled[j]];
+    std::vector<Color> L;
+    continuePaths(sub, L);
+    for (size_t j = 0; j < sampled.size(); ++j) out[sampled[j]] = L[j];
+  }
+}
+
+void CacheEngine::fill(const std::vector<ShadePoint>& pts, const std::vector<float>& baseLum, bool adaptive) {
+  std::map<CacheKey, std::vector<size_t>> groups;
+  for (size_t i = 0; i < pts.size(); ++i)
+    if (technique(pts[i]) == 1 && (maxDepth_ < 0 || pts[i].depth + 2 <= maxDepth_)) groups[keyFor(pts[i])].push_back(i);
+  for (auto& [key, idx] : groups) {
+    std::vector<ShadePoint> sub(idx.size());
+    std::vector<float> lum(idx.size(), 0.0f);
+    for (size_t j = 0; j < idx.size(); ++j) {
+      sub[j] = pts[idx[j]];
+      if (idx[j] < baseLum.size()) lum[j] = baseLum[idx[j]];
+    }
+    std::vector<Lookup> lookups;
+    ensureCoverage(key, sub, lookups, &lum, adaptive);
+  }
+}
+
+void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoint>& pts, std::vector<Lookup>& lookups,
+                                 const std::vector<float>* baseLum, bool adaptive) {
+  RadianceCache& cache = cacheFor(key);
+  const size_t n = pts.size();
+  lookups.assign(n, Lookup{});
+  const float a = aForLevel(key.level);
+  // Candidate spacing starts at half the largest record radius and halves every round down to
+  // the smallest: like the coarse-to-fine image passes, big records are placed first and the
+  // gaps are filled afterwards, so few records are wasted on overlap.
+  float sepPx = std::max(params_.rMinPx, 0.5f * params_.rMaxPx);
+  int adaptiveRounds = 0;
+  bool created = false;
+  std::vector<size_t> todo(n);
+  for (size_t i = 0; i < n; ++i) todo[i] = i;
+  for (;;) {
+    parallelFor(todo.size(), 64, [&](size_t b, size_t e) {
+      for (size_t j = b; j < e; ++j) {
+        const ShadePoint& sp = pts[todo[j]];
+        cache.lookup(sp.hit.p, sp.frame.n, lookups[todo[j]]);
+      }
+    });
+    std::vector<size_t> uncovered;
+    for (size_t i : todo)
+      if (!lookups[i].covered()) uncovered.push_back(i);
+    if (uncovered.empty() && created) {
+      // Neighbour clamping on insertion shrinks the radii of older records, which can uncover
+      // points found covered in an earlier round: check every point again before finishing.
+      created = false;
+      todo.resize(n);
+      for (size_t i = 0; i < n; ++i) todo[i] = i;
+      continue;
+    }
+    if (uncovered.empty()) {
+      if (adaptive && params_.adaptive && baseLum && adaptiveRounds < 4) {
+        ++adaptiveRounds;
+        const auto t0 = Clock::now();
+        const bool changed = adaptiveCheck(key, pts, lookups, *baseLum);
+        stats_.adaptive_s += since(t0);
+        if (changed) {
+          // Shrunk records may uncover points and change the weights of others: look up all again.
+          todo.resize(n);
+          for (size_t i = 0; i < n; ++i) todo[i] = i;
+          created = false;
+          continue;
+        }
+      }
+      break;
+    }
+    ++stats_.uncoveredRounds;
+    // Deterministic shuffle (by the points' seeds) so candidates spread over the batch.
+    std::sort(uncovered.begin(), uncovered.end(), [&](size_t x, size_t y) {
+      const uint64_t hx = hashMix(pts[x].seed, 0xA11CE), hy = hashMix(pts[y].seed, 0xA11CE);
+      return hx != hy ? hx < hy : x < y;
+    });
+    RecordOctree accepted(lo_, hi_);
+    std::vector<ShadePoint> cands;
+    std::vector<Vec3> candNormals;
+    for (size_t i : uncovered) {
+      const ShadePoint& sp = pts[i];
+      bool near = false;
+      accepted.query(sp.hit.p, [&](uint32_t id) {
+        if (near) return;
+        const ShadePoint& c = cands[id];
+        const float sep = a * sepPx * footprint(c.hit.p);
+        if (glm::length(c.hit.p - sp.hit.p) < sep && glm::dot(c.frame.n, sp.frame.n) > 0.5f) near = true;
+      });
+      if (near) continue;
+      accepted.insert(static_cast<uint32_t>(cands.size()), sp.hit.p, a * sepPx * footprint(sp.hit.p));
+      cands.push_back(sp);
+      if (static_cast<int>(cands.size()) >= params_.batch) break;
+    }
+    buildRecords(key, cands);
+    created = true;
+    sepPx = std::max(params_.rMinPx, 0.5f * sepPx);
+    todo = uncovered;
+  }
+}
+
+void CacheEngine::buildRecords(const CacheKey& key, const std::vector<ShadePoint>& cands) {
+  if (cands.empty()) return;
+  RadianceCache& cache = cacheFor(key);
+  const int B = static_cast<int>(cands.size());
+  int M = 0, N = 0;
+  hemisphereCells(key.level == 0 ? params_.rays : params_.secondaryRays, M, N);
+  const int S = M * N;
+  ProjectBatch pb;
+  pb.order = key.order;
+  pb.M = M;
+  pb.N = N;
+  pb.records = B;
+  pb.gradients = params_.gradients;
+  pb.pattern.resize(2 * static_cast<size_t>(S));
+  Rng prng(hashMix(ctx_.options.seed, recordCounter_, static_cast<uint64_t>(key.level) * 1000 + key.depth), 3);
+  for (auto& v : pb.pattern) v = prng.nextFloat();
+  pb.phi0.resize(B);
+  for (int b = 0; b < B; ++b) pb.phi0[b] = 2.0f * kPi * Rng(cands[b].seed, 4).nextFloat();
+  // Smallest distance the gradient formula sees: a thousandth of a pixel footprint keeps 1/r
+  // finite when geometry touches the record, yet far below any R_min.
+  float minFp = INFINITY;
+  for (const auto& c : cands) minFp = std::min(minFp, footprint(c.hit.p));
+  pb.minDistance = std::max(1e-3f * minFp, 1e-12f);
+
+  // Trace the record rays (batched), then shade their hits recursively.
+  const size_t total = static_cast<size_t>(B) * S;
+  std::vector<Ray> rays(total);
+  std::vector<Hit> hits(total);
+  parallelFor(static_cast<size_t>(B), 1, [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b) {
+      const ShadePoint& c = cands[b];
+      for (int j = 0; j < M; ++j)
+        for (int k = 0; k < N; ++k) {
+          const size_t s = static_cast<size_t>(j) * N + k;
+          const float ct = 1.0f - (j + pb.pattern[2 * s]) / M;
+          const float st = std::sqrt(std::max(0.0f, 1.0f - ct * ct));
+          const float phi = 2.0f * kPi * (k + pb.pattern[2 * s + 1]) / N + pb.phi0[b];
+          const Vec3 local(st * std::cos(phi), st * std::sin(phi), ct);
+          rays[b * S + s] = Accel::spawnRay(c.hit, c.frame.toWorld(local));
+        }
+    }
+  });
+  parallelFor(total, 1024, [&](size_t b, size_t e) { ctx_.accel.intersect(rays.data() + b, hits.data() + b, e - b); });
+  stats_.recordRays += total;
+  std::vector<ShadePoint> next(total);
+  parallelFor(total, 1024, [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      const ShadePoint& c = cands[i / S];
+      const Hit& h = hits[i];
+      const bool two = h.valid() && h.bsdf >= 0 && twoSided_[static_cast<size_t>(h.bsdf)];
+      next[i] = makeShadePoint(h, rays[i].d, c.depth + 1, c.level + 1, hashMix(c.seed, i % S, 0x5EED), two);
+    }
+  });
+  std::vector<Color> L;
+  radianceOut(next, L);
+  next.clear();
+  next.shrink_to_fit();
+
+  pb.radiance.resize(total * 3);
+  pb.distance.resize(total);
+  for (size_t i = 0; i < total; ++i) {
+    for (int c = 0; c < 3; ++c) pb.radiance[3 * i + c] = L[i][c];
+    pb.distance[i] = hits[i].valid() ? hits[i].t : 0.0f;
+  }
+  ProjectResult pr;
+  auto t0 = Clock::now();
+  ctx_.backend->project(pb, pr);
+  stats_.projection_s += since(t0);
+  const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
+  if (!params_.gradients) {
+    pr.gradT.assign(K * B, 0.0f);
+    pr.gradB.assign(K * B, 0.0f);
+  }
+  std::vector<RecordInfo> infos(B);
+  for (int b = 0; b < B; ++b) {
+    stats_.droppedSamples += pr.dropped.empty() ? 0 : static_cast<uint64_t>(pr.dropped[b]);
+    // Harmonic mean distance (Ward): misses count as infinitely far.
+    double inv = 0.0;
+    for (int s = 0; s < S; ++s) {
+      const Hit& h = hits[static_cast<size_t>(b) * S + s];
+      if (h.valid()) inv += 1.0 / std::max(double(h.t), double(pb.minDistance));
+    }
+    const float fp = footprint(cands[b].hit.p);
+    const float R = inv > 0.0 ? static_cast<float>(S / inv) : INFINITY;
+    infos[b].p = cands[b].hit.p;
+    infos[b].frame = cands[b].frame;
+    // Gradient limit (as Mitsuba's irrcache clamps R by E/|∇E|): over the influence radius the
+    // first-order change of the mean radiance λ₀ may not exceed λ₀ itself, so gradients near
+    // touching geometry cannot extrapolate to negative radiance.
+    float Rg = INFINITY;
+    if (params_.gradients) {
+      double l0 = 0, g2 = 0;
+      const size_t n2 = static_cast<size_t>(key.order) * key.order;
+      for (int c = 0; c < 3; ++c) {
+        const size_t o = K * b + n2 * c;
+        l0 += pr.lambda[o];
+        g2 += double(pr.gradT[o]) * pr.gradT[o] + double(pr.gradB[o]) * pr.gradB[o];
+      }
+      if (g2 > 0 && l0 > 0) Rg = static_cast<float>(l0 / std::sqrt(g2) / std::sqrt(3.0) / aForLevel(key.level));
+    }
+    infos[b].R = std::min(std::max(std::min(R, Rg), params_.rMinPx * fp), params_.rMaxPx * fp);
+    infos[b].a = aForLevel(key.level);
+    if (key.level == 0 && cands[b].pixel >= 0) recordPixels_.push_back(cands[b].pixel);
+  }
+  std::vector<float> lw, tw, bw;
+  if (params_.worldFrame) {
+    // World-aligned copies (DESIGN §3): f_world(ω) = f_local(Fω) = f_local(R⁻¹ω) with R = Fᵀ,
+    // i.e. R's columns are the record's axes t, b, n.
+    RotateBatch rb;
+    rb.order = key.order;
+    rb.count = 3 * B;
+    rb.rotations.resize(9 * static_cast<size_t>(rb.count));
+    rb.coeffs.resize(K * rb.count);
+    for (int part = 0; part < 3; ++part)
+      for (int b = 0; b < B; ++b) {
+        const Frame& f = infos[b].frame;
+        float* R = &rb.rotations[9 * (static_cast<size_t>(part) * B + b)];
+        const Vec3 cols[3] = {f.t, f.b, f.n};
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 3; ++c) R[3 * r + c] = cols[c][r];
+        const std::vector<float>& src = part == 0 ? pr.lambda : part == 1 ? pr.gradT : pr.gradB;
+        std::copy(src.begin() + K * b, src.begin() + K * (b + 1), rb.coeffs.begin() + K * (static_cast<size_t>(part) * B + b));
+      }
+    std::vector<float> rotated;
+    t0 = Clock::now();
+    ctx_.backend->rotate(rb, rotated);
+    stats_.projection_s += since(t0);
+    lw.assign(rotated.begin(), rotated.begin() + K * B);
+    tw.assign(rotated.begin() + K * B, rotated.begin() + 2 * K * B);
+    bw.assign(rotated.begin() + 2 * K * B, rotated.end());
+  }
+  cache.insert(std::move(infos), pr.lambda, pr.gradT, pr.gradB, lw, tw, bw);
+  recordCounter_ += static_cast<uint64_t>(B);
+}
+
+void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<ShadePoint>& pts,
+                                      const std::vector<Lookup>& lookups, std::vector<Color>& out) {
+  RadianceCache& cache = cacheFor(key);
+  out.assign(pts.size(), Color(0.0f));
+  const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
+  const bool world = params_.worldFrame;
+  std::vector<int> remap(cache.size(), -1);
+  for (size_t begin = 0; begin < pts.size(); begin += kChunk) {
+    const size_t count = std::min(kChunk, pts.size() - begin);
+    InterpolateBatch ib;
+    ib.order = key.order;
+    ib.worldFrame = world;
+    ib.gradients = params_.gradients;
+    ib.points = static_cast<int>(count);
+    ib.pointFrames.resize(9 * count);
+    ib.offsets.resize(count + 1, 0);
+    std::vector<uint32_t> used;
+    for (size_t j = 0; j < count; ++j) {
+      const Lookup& lk = lookups[begin + j];
+      frameRows(pts[begin + j].frame, &ib.pointFrames[9 * j]);
+      for (RcContribution c : lk.entries) {
+        int& slot = remap[static_cast<size_t>(c.record)];
+        if (slot < 0) {
+          slot = static_cast<int>(used.size());
+          used.push_back(static_cast<uint32_t>(c.record));
+        }
+        c.record = slot;
+        ib.entries.push_back(c);
+      }
+      ib.offsets[j + 1] = static_cast<int32_t>(ib.entries.size());
+      stats_.lookups += 1;
+      stats_.contributions += lk.entries.size();
+    }
+    ib.records = static_cast<int>(used.size());
+    ib.lambda.resize(K * used.size());
+    if (ib.gradients) {
+      ib.gradT.resize(K * used.size());
+      ib.gradB.resize(K * used.size());
+    }
+    if (!world) ib.recordFrames.resize(9 * used.size());
+    for (size_t r = 0; r < used.size(); ++r) {
+      cache.copyCoefficients(used[r], world, &ib.lambda[K * r], ib.gradients ? &ib.gradT[K * r] : nullptr,
+                             ib.gradients ? &ib.gradB[K * r] : nullptr);
+      if (!world) frameRows(cache.info(used[r]).frame, &ib.recordFrames[9 * r]);
+      remap[used[r]] = -1;
+    }
+    std::vector<float> lambda;
+    const auto t0 = Clock::now();
+    ctx_.backend->interpolate(ib, lambda);
+    stats_.interpolation_s += since(t0);
+    shadeLambda(pts, begin, count, key.order, lambda, out, nullptr);
+  }
+}
+
+void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, size_t count, int order,
+                              const std::vector<float>& lambda, std::vector<Color>& out,
+                              const std::vector<size_t>* outIndex) {
+  const size_t n2 = static_cast<size_t>(order) * order;
+  auto point = [&](size_t j) -> const ShadePoint& { return pts[outIndex ? (*outIndex)[j] : begin + j]; };
+  auto slot = [&](size_t j) -> Color& { return out[outIndex ? j : begin + j]; };
+  const auto t0 = Clock::now();
+  if (params_.tlMode) {
+    // Tabellion–Lamorlette 2004: the record's irradiance as if it all came from the dominant
+    // direction. E = ∫ L cos from the zonal clamped-cosine coefficients (√π/2, √(π/3), √(5π)/8);
+    // the direction from band 1 (y₁₋₁ ∝ −y, y₁₀ ∝ z, y₁₁ ∝ −x with the Condon–Shortley phase).
+    parallelFor(count, 64, [&](size_t b, size_t e) {
+      for (size_t j = b; j < e; ++j) {
+        const ShadePoint& sp = point(j);
+        const float* L = &lambda[3 * n2 * j];
+        const float c0 = std::sqrt(kPi) / 2, c1 = std::sqrt(kPi / 3), c2 = std::sqrt(5 * kPi) / 8;
+        Color E(0.0f);
+        Vec3 d(0.0f);
+        for (int c = 0; c < 3; ++c) {
+          const float* Lc = L + n2 * c;
+          E[c] = c0 * Lc[0] + (order > 1 ? c1 * Lc[2] : 0.0f) + (order > 2 ? c2 * Lc[6] : 0.0f);
+          const float wl = c == 0 ? 0.2126f : c == 1 ? 0.7152f : 0.0722f;
+          if (order > 1) d += wl * Vec3(-Lc[3], -Lc[1], Lc[2]);
+        }
+        const float len = glm::length(d);
+        d = len > 0.0f ? d / len : Vec3(0, 0, 1);
+        if (d.z < 1e-2f) d = glm::normalize(Vec3(d.x, d.y, 1e-2f));
+        const Color f = ctx_.scene.bsdfs[sp.hit.bsdf]->eval(sp.wo, d) / d.z;
+        const Color Lo = f * glm::max(E, Color(0.0f));
+        slot(j) = isFinite(Lo) ? Lo : Color(0.0f);
+      }
+    });
+    stats_.dot_s += since(t0);
+    return;
+  }
+  BrdfDotBatch db;
+  db.order = order;
+  db.points = static_cast<int>(count);
+  db.lambda = lambda;
+  db.wo.resize(3 * count);
+  db.material.resize(count);
+  for (size_t j = 0; j < count; ++j) {
+    const ShadePoint& sp = point(j);
+    for (int c = 0; c < 3; ++c) db.wo[3 * j + c] = sp.wo[c];
+    db.material[j] = tables_.plans()[static_cast<size_t>(sp.hit.bsdf)].tableIndex;
+  }
+  tables_.fillBatch(db);
+  std::vector<float> res;
+  ctx_.backend->brdfDot(db, res);
+  for (size_t j = 0; j < count; ++j) {
+    // Extrapolation by gradients (or SH ringing) can dip below zero where light changes
+    // abruptly; negative radiance is not physical and is clamped.
+    const Color Lo = glm::max(Color(res[3 * j], res[3 * j + 1], res[3 * j + 2]), Color(0.0f));
+    slot(j) = isFinite(Lo) ? Lo : Color(0.0f);
+  }
+  stats_.dot_s += since(t0);
+}
+
+bool CacheEngine::adaptiveCheck(const CacheKey& key, const std::vector<ShadePoint>& pts,
+                                const std::vector<Lookup>& lookups, const std::vector<float>& baseLum) {
+  // EGSR 2006: at a point covered by several records, each record's own prediction (its Λ moved
+  // by its gradient, rotated, dotted with the BRDF) should agree; a disagreement above the Weber
+  // threshold would show as a visible seam, so the most deviant record gets a smaller a_i.
+  RadianceCache& cache = cacheFor(key);
+  const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
+  const bool world = params_.worldFrame;
+  std::vector<size_t> pairPoint;
+  std::vector<RcContribution> pairEntry;
+  for (size_t i = 0; i < pts.size(); ++i)
+    if (lookups[i].entries.size() >= 2)
+      for (const auto& e : lookups[i].entries) {
+        pairPoint.push_back(i);
+        pairEntry.push_back(e);
+      }
+  if (pairPoint.empty()) return false;
+  std::vector<Color> pred(pairPoint.size());
+  for (size_t begin = 0; begin < pairPoint.size(); begin += kChunk) {
+    const size_t count = std::min(kChunk, pairPoint.size() - begin);
+    InterpolateBatch ib;
+    ib.order = key.order;
+    ib.worldFrame = world;
+    ib.gradients = params_.gradients;
+    ib.points = static_cast<int>(count);
+    ib.records = static_cast<int>(count);
+    ib.pointFrames.resize(9 * count);
+    ib.offsets.resize(count + 1);
+    ib.lambda.resize(K * count);
+    if (ib.gradients) {
+      ib.gradT.resize(K * count);
+      ib.gradB.resize(K * count);
+    }
+    if (!world) ib.recordFrames.resize(9 * count);
+    for (size_t j = 0; j < count; ++j) {
+      RcContribution c = pairEntry[begin + j];
+      const uint32_t id = static_cast<uint32_t>(c.record);
+      frameRows(pts[pairPoint[begin + j]].frame, &ib.pointFrames[9 * j]);
+      cache.copyCoefficients(id, world, &ib.lambda[K * j], ib.gradients ? &ib.gradT[K * j] : nullptr,
+                             ib.gradients ? &ib.gradB[K * j] : nullptr);
+      if (!world) frameRows(cache.info(id).frame, &ib.recordFrames[9 * j]);
+      c.record = static_cast<int>(j);
+      c.weight = 1.0f;
+      ib.entries.push_back(c);
+      ib.offsets[j + 1] = static_cast<int32_t>(j + 1);
+    }
+    std::vector<float> lambda;
+    auto t0 = Clock::now();
+    ctx_.backend->interpolate(ib, lambda);
+    stats_.interpolation_s += since(t0);
+    std::vector<size_t> idx(pairPoint.begin() + begin, pairPoint.begin() + begin + count);
+    std::vector<Color> part(count);
+    shadeLambda(pts, 0, count, key.order, lambda, part, &idx);
+    std::copy(part.begin(), part.end(), pred.begin() + begin);
+  }
+  std::map<uint32_t, float> shrink;
+  for (size_t q = 0; q < pairPoint.size();) {
+    const size_t i = pairPoint[q];
+    size_t end = q;
+    double wsum = 0, ysum = 0;
+    while (end < pairPoint.size() && pairPoint[end] == i) {
+      wsum += pairEntry[end].weight;
+      ysum += pairEntry[end].weight * luminance(pred[end]);
+      ++end;
+    }
+    const double mean = ysum / wsum;
+    const double threshold = params_.weber * (std::max(0.0, mean) + std::max(0.0f, baseLum[i]));
+    double worst = 0;
+    size_t worstAt = q;
+    for (size_t k = q; k < end; ++k) {
+      const double dev = std::fabs(luminance(pred[k]) - mean);
+      if (dev > worst) {
+        worst = dev;
+        worstAt = k;
+      }
+    }
+    if (threshold > 0 && worst > threshold) {
+      // Exclude p from the record's influence: contributes iff w > 1/a, so a ≤ 1/w (with margin).
+      const uint32_t id = static_cast<uint32_t>(pairEntry[worstAt].record);
+      const float newA = 0.95f / pairEntry[worstAt].weight;
+      auto it = shrink.find(id);
+      if (it == shrink.end()) shrink[id] = newA;
+      else it->second = std::min(it->second, newA);
+    }
+    q = end;
+  }
+  bool changed = false;
+  const float aMin = aForLevel(key.level) * params_.minAScale;
+  for (const auto& [id, newA] : shrink) {
+    const float before = cache.info(id).a;
+    cache.shrinkA(id, newA, aMin);
+    if (cache.info(id).a < before) {
+      changed = true;
+      ++stats_.adaptiveShrinks;
+    }
+  }
+  return changed;
+}
+
+void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<Color>& out) {
+  const size_t n = pts.size();
+  out.assign(n, Color(0.0f));
+  std::vector<Ray> rays(n);
+  std::vector<Color> weight(n, Color(0.0f));
+  std::vector<char> alive(n, 0), delta(n, 0);
+  parallelFor(n, 64, [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      const ShadePoint& sp = pts[i];
+      Rng rng(sp.seed, 2);
+      const float u1 = rng.nextFloat(), u2 = rng.nextFloat(), u3 = rng.nextFloat();
+      const auto s = ctx_.scene.bsdfs[sp.hit.bsdf]->sample(sp.wo, u1, Vec2(u2, u3));
+      if (!s || !isFinite(s->weight) || maxComponent(s->weight) <= 0.0f) continue;
+      Color w = s->weight;
+      if (sp.depth >= rrDepth_) {
+        // Russian roulette on this vertex's throughput factor (unbiased: survivors divide by q).
+        const float q = std::min(0.95f, maxComponent(w));
+        if (rng.nextFloat() >= q) continue;
+        w /= q;
+      }
+      weight[i] = w;
+      alive[i] = 1;
+      delta[i] = (s->lobe & kLobeDelta) ? 1 : 0;
+      rays[i] = Accel::spawnRay(sp.hit, sp.frame.toWorld(s->wi));
+    }
+  });
+  std::vector<size_t> live;
+  for (size_t i = 0; i < n; ++i)
+    if (alive[i]) live.push_back(i);
+  if (live.empty()) return;
+  std::vector<Ray> liveRays(live.size());
+  for (size_t j = 0; j < live.size(); ++j) liveRays[j] = rays[live[j]];
+  std::vector<Hit> hits(live.size());
+  parallelFor(live.size(), 1024, [&](size_t b, size_t e) { ctx_.accel.intersect(liveRays.data() + b, hits.data() + b, e - b); });
+  stats_.pathRays += live.size();
+  std::vector<ShadePoint> next(live.size());
+  for (size_t j = 0; j < live.size(); ++j) {
+    const ShadePoint& sp = pts[live[j]];
+    const Hit& h = hits[j];
+    const bool two = h.valid() && h.bsdf >= 0 && twoSided_[static_cast<size_t>(h.bsdf)];
+    next[j] = makeShadePoint(h, liveRays[j].d, sp.depth + 1, sp.level + (delta[live[j]] ? 0 : 1),
+                             hashMix(sp.seed, 0xC0471), two);
+    next[j].pixel = sp.pixel;
+  }
+  std::vector<Color> L;
+  radianceOut(next, L);
+  for (size_t j = 0; j < live.size(); ++j) out[live[j]] = weight[live[j]] * L[j];
+}
+
+}  // namespace rc

@@ -1,0 +1,106 @@
+#pragma once
+// The radiance-caching engine (DESIGN §1): GetOutRadiance of the course notes, batched.
+//   radianceOut(points)  = direct light (render/direct_light.h, the path tracer's estimator) +
+//                          indirect(points)                       [emission of the points excluded]
+//   indirect(points)     = cached materials: ensure the cache covers the points (new records are
+//                          sampled and projected in batches), interpolate Λ (gradients, rotation),
+//                          dot with the BRDF×cos table;
+//                          importance-sampled materials (delta, too sharp) and levels past
+//                          cache_depth: BSDF sampling, recursing into radianceOut at the next hit.
+// A record at a point of depth d stores the radiance arriving from its hemisphere's hits
+// without their own emission (that light is direct light, computed exactly), i.e. the
+// radianceOut of depth d+1 points, so the sum equals the path tracer's estimate of the same
+// integral (same max_depth).
+// Caches are keyed by (level, order) — and by depth when max_depth is finite, because then
+// records at different depths hold different integrals. Level 0 caches use a; level l uses
+// a·secondary_a_scale^l and secondary_rays.
+// All control flow is serial; per-item work runs under parallelFor with per-item RNG streams, so
+// images depend only on the seed.
+#include <atomic>
+#include <map>
+#include <memory>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "brdf/material_plan.h"
+#include "cache/cache_params.h"
+#include "cache/radiance_cache.h"
+#include "cache/shade_point.h"
+#include "render/camera.h"
+#include "render/integrator.h"
+
+namespace rc {
+
+struct CacheKey {
+  int level = 0, depth = 0, order = 0;
+  bool operator<(const CacheKey& o) const {
+    return std::tie(level, depth, order) < std::tie(o.level, o.depth, o.order);
+  }
+};
+
+struct EngineStats {
+  std::atomic<uint64_t> recordRays{0}, pathRays{0}, lookups{0}, contributions{0}, droppedSamples{0};
+  std::atomic<uint64_t> adaptiveShrinks{0}, uncoveredRounds{0};
+  double sampling_s = 0, projection_s = 0, interpolation_s = 0, dot_s = 0, adaptive_s = 0;
+};
+
+// Per-point extras for AOVs (primary points only).
+struct LookupAov {
+  int contributors = 0;
+  float meanA = 0, meanRadiusPx = 0;
+};
+
+class CacheEngine {
+ public:
+  CacheEngine(const RenderContext& ctx, const RcacheParams& params, const BrdfTableSet& tables,
+              const CameraModel& camera, int maxDepth, int rrDepth, Vec3 sceneLo, Vec3 sceneHi);
+
+  // L_o(p, ω_o) without p's own emission. out.size() == points.size().
+  void radianceOut(const std::vector<ShadePoint>& points, std::vector<Color>& out);
+  // Indirect part only; `aov` (optional, same size) receives lookup details.
+  void indirect(const std::vector<ShadePoint>& points, std::vector<Color>& out, std::vector<LookupAov>* aov = nullptr);
+  // Fill pass at level 0: make the caches cover `points`; with adaptive caching, `baseLum`
+  // (luminance of the points' direct light + emission) scales the Weber threshold.
+  void fill(const std::vector<ShadePoint>& points, const std::vector<float>& baseLum, bool adaptive);
+
+  // Technique of a point's material: 0 none, 1 cache, 2 BSDF sampling.
+  int technique(const ShadePoint& sp) const;
+  CacheKey keyFor(const ShadePoint& sp) const;
+
+  std::map<CacheKey, std::unique_ptr<RadianceCache>>& caches() { return caches_; }
+  RadianceCache& cacheFor(const CacheKey& key);
+  EngineStats& stats() { return stats_; }
+  // Pixels whose primary hit created a record (AOV "records").
+  std::vector<int> recordPixels() const { return recordPixels_; }
+  float footprint(const Vec3& p) const;
+  float aForLevel(int level) const;
+
+ private:
+  const RenderContext& ctx_;
+  RcacheParams params_;
+  const BrdfTableSet& tables_;
+  const CameraModel& camera_;
+  int maxDepth_, rrDepth_;
+  Vec3 lo_, hi_;
+  std::vector<int> planTech_;   // per bsdf: 0 none, 1 cache, 2 sampling
+  std::vector<int> planOrder_;  // per bsdf: record order
+  std::vector<bool> twoSided_;
+  std::map<CacheKey, std::unique_ptr<RadianceCache>> caches_;
+  EngineStats stats_;
+  std::vector<int> recordPixels_;
+  uint64_t recordCounter_ = 0;
+
+  void ensureCoverage(const CacheKey& key, const std::vector<ShadePoint>& pts, std::vector<Lookup>& lookups,
+                      const std::vector<float>* baseLum, bool adaptive);
+  void buildRecords(const CacheKey& key, const std::vector<ShadePoint>& cands);
+  void interpolateAndShade(const CacheKey& key, const std::vector<ShadePoint>& pts, const std::vector<Lookup>& lookups,
+                           std::vector<Color>& out);
+  bool adaptiveCheck(const CacheKey& key, const std::vector<ShadePoint>& pts, const std::vector<Lookup>& lookups,
+                     const std::vector<float>& baseLum);
+  void continuePaths(const std::vector<ShadePoint>& pts, std::vector<Color>& out);
+  void shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, size_t count, int order,
+                   const std::vector<float>& lambda, std::vector<Color>& out, const std::vector<size_t>* outIndex);
+};
+
+}  // namespace rc

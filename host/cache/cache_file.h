@@ -1,0 +1,34 @@
+#pragma once
+// The view-independent cache file (--cache-save / --cache-load): every record of every cache
+// (position, frame, R_i, a_i, Λ and gradients in the record's own frame). Layout, host byte order:
+//   "RCCACHE1" | u32 version | u64 scene hash | u32 cache count |
+//   per cache: i32 level, depth, order | u32 records | per record 14 floats (p, t, b, n, R, a) |
+//              floats Λ[records][3][n²], ∂Λ/∂t, ∂Λ/∂b |
+//   u64 FNV-1a of every preceding byte.
+// Written to a temporary sibling and renamed (a reader sees a whole file or none). Loading checks
+// magic, version, scene hash (geometry, materials, emitters, max_depth, record mode: whatever
+// changes what a record holds — not the camera) and the checksum, and names what is wrong.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "cache/cache_engine.h"
+#include "cache/radiance_cache.h"
+#include "scene/scene.h"
+
+namespace rc {
+
+constexpr uint32_t kCacheFileVersion = 1;
+
+struct CacheFileEntry {
+  CacheKey key;
+  std::vector<RecordInfo> infos;
+  std::vector<float> lambda, gradT, gradB;  // record frame, [records][3][n²]
+};
+
+uint64_t cacheSceneHash(const Scene& scene, int maxDepth, bool tlMode);
+void saveCacheFile(const std::string& path, uint64_t sceneHash, const std::vector<CacheFileEntry>& entries);
+// Throws rc::Error("<path>: ...") on any problem.
+std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expectedSceneHash);
+
+}  // namespace rc

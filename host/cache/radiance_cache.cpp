@@ -1,0 +1,127 @@
+#include "cache/radiance_cache.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "cache/record_weights.h"
+#include "core/error.h"
+
+namespace rc {
+
+RadianceCache::RadianceCache(int order, const Vec3& lo, const Vec3& hi) : order_(order), octree_(lo, hi) {}
+
+size_t RadianceCache::size() const {
+  std::shared_lock lock(mutex_);
+  return infos_.size();
+}
+
+uint32_t RadianceCache::insert(std::vector<RecordInfo> infos, const std::vector<float>& lambda,
+                               const std::vector<float>& gradT, const std::vector<float>& gradB,
+                               const std::vector<float>& lambdaWorld, const std::vector<float>& gradTWorld,
+                               const std::vector<float>& gradBWorld, bool clampNeighbours) {
+  const size_t k = static_cast<size_t>(coeffsPerRecord());
+  const size_t n = infos.size();
+  if (lambda.size() != n * k || gradT.size() != n * k || gradB.size() != n * k)
+    throw Error("RadianceCache::insert: coefficient arrays do not match the record count");
+  const bool world = !lambdaWorld.empty();
+  if (world && (lambdaWorld.size() != n * k || gradTWorld.size() != n * k || gradBWorld.size() != n * k))
+    throw Error("RadianceCache::insert: world-frame arrays do not match the record count");
+  std::unique_lock lock(mutex_);
+  if (!infos_.empty() && world != hasWorld_)
+    throw Error("RadianceCache::insert: mixing world-frame and record-frame records");
+  hasWorld_ = world;
+  const uint32_t first = static_cast<uint32_t>(infos_.size());
+  for (size_t i = 0; i < n; ++i) {
+    RecordInfo& r = infos[i];
+    // Neighbour clamping against every record whose influence sphere overlaps the new one's
+    // and that faces the same way (records on the other side of a thin wall are not neighbours).
+    const float reach = r.a * r.R;
+    std::vector<uint32_t> neighbours;
+    if (clampNeighbours) octree_.querySphere(r.p, reach, [&](uint32_t id) { neighbours.push_back(id); });
+    for (uint32_t id : neighbours) {
+      RecordInfo& q = infos_[id];
+      if (glm::dot(q.frame.n, r.frame.n) <= 0.0f) continue;
+      if (glm::length(q.p - r.p) > q.a * q.R + r.a * r.R) continue;
+      clampNeighbourRadii(r.p, r.R, q.p, q.R);
+    }
+    const uint32_t id = static_cast<uint32_t>(infos_.size());
+    infos_.push_back(r);
+    octree_.insert(id, r.p, r.a * r.R);
+  }
+  lambda_.insert(lambda_.end(), lambda.begin(), lambda.end());
+  gradT_.insert(gradT_.end(), gradT.begin(), gradT.end());
+  gradB_.insert(gradB_.end(), gradB.begin(), gradB.end());
+  if (world) {
+    lambdaW_.insert(lambdaW_.end(), lambdaWorld.begin(), lambdaWorld.end());
+    gradTW_.insert(gradTW_.end(), gradTWorld.begin(), gradTWorld.end());
+    gradBW_.insert(gradBW_.end(), gradBWorld.begin(), gradBWorld.end());
+  }
+  return first;
+}
+
+void RadianceCache::lookupLocked(const Vec3& p, const Vec3& n, Lookup& out, bool brute) const {
+  out.entries.clear();
+  out.weightSum = 0.0f;
+  auto test = [&](uint32_t id) {
+    const RecordInfo& r = infos_[id];
+    const float w = contributionWeight(p, n, r.p, r.frame.n, r.R, r.a);
+    if (w <= 0.0f) return;
+    const Vec3 d = p - r.p;
+    out.entries.push_back({static_cast<rc_int>(id), w, glm::dot(d, r.frame.t), glm::dot(d, r.frame.b)});
+    out.weightSum += w;
+  };
+  if (brute) {
+    for (uint32_t id = 0; id < infos_.size(); ++id) test(id);
+  } else {
+    octree_.query(p, test);
+    // Octree order depends on the node layout; sort so results match brute force exactly.
+    std::sort(out.entries.begin(), out.entries.end(),
+              [](const RcContribution& x, const RcContribution& y) { return x.record < y.record; });
+    out.weightSum = 0.0f;
+    for (const auto& e : out.entries) out.weightSum += e.weight;
+  }
+}
+
+void RadianceCache::lookup(const Vec3& p, const Vec3& n, Lookup& out) const {
+  std::shared_lock lock(mutex_);
+  lookupLocked(p, n, out, false);
+}
+
+void RadianceCache::lookupBruteForce(const Vec3& p, const Vec3& n, Lookup& out) const {
+  std::shared_lock lock(mutex_);
+  lookupLocked(p, n, out, true);
+}
+
+void RadianceCache::shrinkA(uint32_t id, float newA, float aMin) {
+  std::unique_lock lock(mutex_);
+  if (id >= infos_.size()) return;
+  infos_[id].a = std::max(aMin, std::min(infos_[id].a, newA));
+}
+
+RecordInfo RadianceCache::info(uint32_t id) const {
+  std::shared_lock lock(mutex_);
+  return infos_.at(id);
+}
+
+void RadianceCache::copyCoefficients(uint32_t id, bool world, float* lambda, float* gradT, float* gradB) const {
+  std::shared_lock lock(mutex_);
+  const size_t k = static_cast<size_t>(coeffsPerRecord());
+  if (world && !hasWorld_) throw Error("RadianceCache: world-frame coefficients requested but not stored");
+  const std::vector<float>& L = world ? lambdaW_ : lambda_;
+  const std::vector<float>& T = world ? gradTW_ : gradT_;
+  const std::vector<float>& B = world ? gradBW_ : gradB_;
+  std::memcpy(lambda, L.data() + id * k, k * sizeof(float));
+  if (gradT) std::memcpy(gradT, T.data() + id * k, k * sizeof(float));
+  if (gradB) std::memcpy(gradB, B.data() + id * k, k * sizeof(float));
+}
+
+void RadianceCache::snapshot(std::vector<RecordInfo>& infos, std::vector<float>& lambda, std::vector<float>& gradT,
+                             std::vector<float>& gradB) const {
+  std::shared_lock lock(mutex_);
+  infos = infos_;
+  lambda = lambda_;
+  gradT = gradT_;
+  gradB = gradB_;
+}
+
+}  // namespace rc

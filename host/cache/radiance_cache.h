@@ -1,0 +1,77 @@
+#pragma once
+// One cache of incoming-radiance records of a single SH order (one "family": e.g. the order-10
+// glossy records of the primary hits, or the order-3 diffuse records of the secondary hits).
+// Records keep Λ and the gradients in the record's own frame (canonical, what the cache file
+// stores) and, in world-frame mode, a world-aligned copy made once at insertion (DESIGN §3).
+// Thread safety: lookups take a shared lock, insertion and radius updates an exclusive one, so
+// lookups may run in parallel with each other and with an insertion on another thread.
+#include <cstdint>
+#include <mutex>
+#include <shared_mutex>
+#include <vector>
+
+#include "cache/record_octree.h"
+#include "core/frame.h"
+#include "core/math.h"
+#include "rc_types.h"
+
+namespace rc {
+
+struct RecordInfo {
+  Vec3 p{0.0f};
+  Frame frame;        // t, b, n (n = the record's normal)
+  float R = 1.0f;     // harmonic-mean distance after clamping
+  float a = 0.3f;     // per-record accuracy (adaptive caching may shrink it)
+};
+
+// The gathered contributions for one lookup point.
+struct Lookup {
+  std::vector<RcContribution> entries;  // record = index into the cache, weight, dt, db
+  float weightSum = 0.0f;
+  bool covered() const { return weightSum > 0.0f; }
+};
+
+class RadianceCache {
+ public:
+  RadianceCache(int order, const Vec3& lo, const Vec3& hi);
+
+  int order() const { return order_; }
+  int coeffsPerRecord() const { return 3 * order_ * order_; }
+  size_t size() const;
+
+  // Adds records (coefficients in record frame, [3][n2] each; world copies optional = empty)
+  // with neighbour clamping of R against records already present and among themselves.
+  // Returns the index of the first new record.
+  uint32_t insert(std::vector<RecordInfo> infos, const std::vector<float>& lambda, const std::vector<float>& gradT,
+                  const std::vector<float>& gradB, const std::vector<float>& lambdaWorld,
+                  const std::vector<float>& gradTWorld, const std::vector<float>& gradBWorld,
+                  bool clampNeighbours = true);
+
+  // Contributions at (p, n): every record with w_i > 1/a_i that is not in front of p.
+  void lookup(const Vec3& p, const Vec3& n, Lookup& out) const;
+  // Brute-force version of lookup (tests, and a cross-check of the octree).
+  void lookupBruteForce(const Vec3& p, const Vec3& n, Lookup& out) const;
+
+  // Adaptive caching: lower a_i (never below aMin).
+  void shrinkA(uint32_t id, float newA, float aMin);
+
+  // Snapshot access for batching (copy under the shared lock).
+  RecordInfo info(uint32_t id) const;
+  void copyCoefficients(uint32_t id, bool world, float* lambda, float* gradT, float* gradB) const;
+  bool hasWorldCopies() const { return hasWorld_; }
+  // Everything (for the cache file / AOVs): consistent snapshot.
+  void snapshot(std::vector<RecordInfo>& infos, std::vector<float>& lambda, std::vector<float>& gradT,
+                std::vector<float>& gradB) const;
+
+ private:
+  int order_;
+  mutable std::shared_mutex mutex_;
+  std::vector<RecordInfo> infos_;
+  std::vector<float> lambda_, gradT_, gradB_;           // record frame
+  std::vector<float> lambdaW_, gradTW_, gradBW_;        // world frame (world-frame mode only)
+  bool hasWorld_ = false;
+  RecordOctree octree_;
+  void lookupLocked(const Vec3& p, const Vec3& n, Lookup& out, bool brute) const;
+};
+
+}  // namespace rc

@@ -1,0 +1,397 @@
+#include "cache/rcache_integrator.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "brdf/material_plan.h"
+#include "cache/cache_engine.h"
+#include "cache/cache_file.h"
+#include "cache/cache_params.h"
+#include "cl/sh_backend.h"
+#include "core/error.h"
+#include "core/parallel.h"
+#include "render/camera.h"
+#include "render/direct_light.h"
+#include "render/film.h"
+#include "render/light_sampler.h"
+#include "render/render_loop.h"
+
+namespace rc {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Image passes of the cache fill: pixel grids of these strides, coarse to fine (Křivánek's
+// implementation fills in the same spirit; big records land first, later passes fill gaps).
+constexpr int kFillStrides[] = {16, 8, 4, 2, 1};
+// Points per engine call in the image passes: bounds memory and gives progress/cancel points.
+constexpr size_t kPointsPerCall = 8192;
+
+void sceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
+  lo = Vec3(INFINITY);
+  hi = Vec3(-INFINITY);
+  for (const Mesh& m : scene.meshes)
+    for (const Vec3& p : m.positions) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  for (const Sphere& s : scene.spheres) {
+    lo = glm::min(lo, s.center - Vec3(s.radius));
+    hi = glm::max(hi, s.center + Vec3(s.radius));
+  }
+  if (!(lo.x <= hi.x)) {
+    lo = Vec3(-1.0f);
+    hi = Vec3(1.0f);
+  }
+}
+
+class RcacheIntegrator : public Integrator {
+ public:
+  explicit RcacheIntegrator(const IntegratorSettings& s) : settings_(s), params_(parseRcacheParams(s.params)) {}
+  std::string name() const override { return "rcache"; }
+  Image render(const RenderContext& ctx, RenderStats& stats) override;
+
+ private:
+  IntegratorSettings settings_;
+  RcacheParams params_;
+};
+
+struct Primary {
+  ShadePoint sp;
+  Vec2 filmPos;
+  Color Le{0.0f};
+  int px = 0, py = 0;
+};
+
+Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
+  const auto tStart = Clock::now();
+  const Scene& scene = ctxIn.scene;
+  std::unique_ptr<ShBackend> ownBackend;
+  ShBackend* backend = ctxIn.backend;
+  if (!backend) {
+    ownBackend = makeScalarBackend();
+    backend = ownBackend.get();
+  }
+  RenderContext ctx{ctxIn.scene, ctxIn.accel, ctxIn.lights, ctxIn.options, backend, ctxIn.cancel, ctxIn.progress};
+  const int maxDepth = settings_.maxDepth;
+  const int spp = ctx.options.spp > 0 ? ctx.options.spp : scene.sampleCount;
+  const uint64_t seed = scene.samplerSeed + ctx.options.seed;
+  auto cancelled = [&] { return ctx.cancel && ctx.cancel->load(std::memory_order_relaxed); };
+
+  // Materials: technique, SH order and BRDF×cos tables (nothing is built without cached materials).
+  auto t0 = Clock::now();
+  BrdfTableSet tables;
+  BrdfTableOptions topt;
+  topt.orderOverride = params_.order;
+  topt.notice = [&](const std::string& msg) { stats.setText("brdf_notice", msg); };
+  tables.build(scene.bsdfs, topt);
+  const double tablesS = since(t0);
+
+  Film film(scene.film);
+  const int W = film.width(), H = film.height();
+  CameraModel camera(scene.camera, W, H);
+  Vec3 lo, hi;
+  sceneBounds(scene, lo, hi);
+  CacheEngine engine(ctx, params_, tables, camera, maxDepth, settings_.rrDepth, lo, hi);
+  const uint64_t hash = cacheSceneHash(scene, maxDepth, params_.tlMode);
+  const bool loaded = !ctx.options.cacheLoad.empty();
+  size_t recordsLoaded = 0;
+  if (loaded) {
+    for (CacheFileEntry& e : loadCacheFile(ctx.options.cacheLoad, hash)) {
+      RadianceCache& cache = engine.cacheFor(e.key);
+      std::vector<float> lw, tw, bw;
+      if (params_.worldFrame && !e.infos.empty()) {
+        const size_t K = static_cast<size_t>(cache.coeffsPerRecord()), B = e.infos.size();
+        RotateBatch rb;
+        rb.order = e.key.order;
+        rb.count = static_cast<int>(3 * B);
+        rb.rotations.resize(9 * 3 * B);
+        rb.coeffs.resize(K * 3 * B);
+        for (size_t part = 0; part < 3; ++part)
+          for (size_t b = 0; b < B; ++b) {
+            const Frame& f = e.infos[b].frame;
+            const Vec3 cols[3] = {f.t, f.b, f.n};
+            for (int r = 0; r < 3; ++r)
+              for (int c = 0; c < 3; ++c) rb.rotations[9 * (part * B + b) + 3 * r + c] = cols[c][r];
+            const std::vector<float>& src = part == 0 ? e.lambda : part == 1 ? e.gradT : e.gradB;
+            std::copy(src.begin() + K * b, src.begin() + K * (b + 1), rb.coeffs.begin() + K * (part * B + b));
+          }
+        std::vector<float> rot;
+        backend->rotate(rb, rot);
+        lw.assign(rot.begin(), rot.begin() + K * B);
+        tw.assign(rot.begin() + K * B, rot.begin() + 2 * K * B);
+        bw.assign(rot.begin() + 2 * K * B, rot.end());
+      }
+      // The file holds the final, already clamped radii: insert as they are.
+      recordsLoaded += e.infos.size();
+      cache.insert(e.infos, e.lambda, e.gradT, e.gradB, lw, tw, bw, false);
+    }
+  }
+
+  // Primary hits of a set of film positions.
+  auto primaries = [&](const std::vector<Vec2>& pos, const std::vector<int>& pixel, const std::vector<uint64_t>& seeds,
+                       std::vector<Primary>& out) {
+    out.resize(pos.size());
+    parallelFor(pos.size(), 256, [&](size_t b, size_t e) {
+      for (size_t i = b; i < e; ++i) {
+        const Ray ray = camera.generate(pos[i]);
+        const Hit hit = ctx.accel.intersect(ray);
+        Primary& p = out[i];
+        p.filmPos = pos[i];
+        const bool two = hit.valid() && hit.bsdf >= 0 && scene.bsdfs[hit.bsdf]->typeName() == "twosided";
+        p.sp = makeShadePoint(hit, ray.d, 1, 0, seeds[i], two);
+        p.sp.pixel = pixel[i];
+        p.Le = Color(0.0f);
+        if (maxDepth != 0 && !settings_.hideEmitters) {
+          if (!hit.valid()) p.Le = ctx.lights.environment(ray.d);
+          else if (hit.emitter >= 0) p.Le = emitted(scene, hit, -ray.d);
+        }
+      }
+    });
+  };
+
+  // ---- cache fill: coarse-to-fine pixel grids (skipped when a cache was loaded) ----
+  t0 = Clock::now();
+  bool interrupted = false;
+  if (!loaded) {
+    std::vector<char> visited(static_cast<size_t>(W) * H, 0);
+    for (int stride : kFillStrides) {
+      if (interrupted) break;
+      std::vector<Vec2> pos;
+      std::vector<int> pix;
+      std::vector<uint64_t> seeds;
+      for (int y = 0; y < H; y += stride)
+        for (int x = 0; x < W; x += stride) {
+          const size_t id = static_cast<size_t>(y) * W + x;
+          if (visited[id]) continue;
+          visited[id] = 1;
+          pos.emplace_back(x + 0.5f, y + 0.5f);
+          pix.push_back(static_cast<int>(id));
+          seeds.push_back(hashMix(seed, id, 0xF111));
+        }
+      for (size_t begin = 0; begin < pos.size(); begin += kPointsPerCall) {
+        if (cancelled()) {
+          interrupted = true;
+          break;
+        }
+        const size_t end = std::min(pos.size(), begin + kPointsPerCall);
+        std::vector<Primary> prim;
+        primaries({pos.begin() + begin, pos.begin() + end}, {pix.begin() + begin, pix.begin() + end},
+                  {seeds.begin() + begin, seeds.begin() + end}, prim);
+        std::vector<ShadePoint> pts(prim.size());
+        for (size_t i = 0; i < prim.size(); ++i) pts[i] = prim[i].sp;
+        // Weber thresholds are relative to what the viewer sees: direct light + emission.
+        std::vector<float> base(pts.size(), 0.0f);
+        if (params_.adaptive) {
+          parallelFor(pts.size(), 64, [&](size_t b, size_t e) {
+            for (size_t i = b; i < e; ++i) {
+              if (engine.technique(pts[i]) != 1) continue;
+              Rng rng(pts[i].seed, 1);
+              const Color d = directLight(ctx, pts[i].hit, pts[i].frame, pts[i].wo, *scene.bsdfs[pts[i].hit.bsdf], rng);
+              base[i] = luminance(d + prim[i].Le);
+            }
+          });
+        }
+        engine.fill(pts, base, true);
+        if (ctx.progress) ctx.progress("cache fill (stride " + std::to_string(stride) + ")", double(end), double(pos.size()));
+      }
+    }
+  }
+  const double fillS = since(t0);
+
+  // ---- final pass: spp jittered samples per pixel, in bands of rows ----
+  // Each band is shaded after the engine made the caches cover its points; a band that created
+  // records may have changed what earlier bands would see, so bands up to the last one that
+  // created records are shaded again at the end. The image is then a function of the final
+  // cache alone — the same cache --cache-save writes — and rendering with --cache-load of that
+  // file reproduces it exactly.
+  t0 = Clock::now();
+  const int rowsPerBand = std::max(1, static_cast<int>(kPointsPerCall / std::max(1, W * spp)));
+  const int bands = (H + rowsPerBand - 1) / rowsPerBand;
+  std::vector<std::unique_ptr<TileFilm>> bandFilms(static_cast<size_t>(bands));
+  const bool aovRecords = std::count(ctx.options.aovs.begin(), ctx.options.aovs.end(), "records") > 0;
+  const bool aovRadius = std::count(ctx.options.aovs.begin(), ctx.options.aovs.end(), "radius") > 0;
+  const bool aovTech = std::count(ctx.options.aovs.begin(), ctx.options.aovs.end(), "technique") > 0;
+  const bool aovContrib = std::count(ctx.options.aovs.begin(), ctx.options.aovs.end(), "contributors") > 0;
+  for (const std::string& a : ctx.options.aovs)
+    if (a != "records" && a != "radius" && a != "technique" && a != "contributors")
+      throw Error("rcache: unknown AOV '" + a + "' (known: records, radius, technique, contributors)");
+  uint64_t cameraRays = 0, nanSamples = 0;
+  auto totalRecords = [&] {
+    size_t n = 0;
+    for (auto& [k, c] : engine.caches()) n += c->size();
+    return n;
+  };
+  auto renderBand = [&](int band) {
+    const int y0 = band * rowsPerBand, y1 = std::min(H, y0 + rowsPerBand);
+    std::vector<Vec2> pos;
+    std::vector<int> pix;
+    std::vector<uint64_t> seeds;
+    for (int y = y0; y < y1; ++y)
+      for (int x = 0; x < W; ++x)
+        for (int s = 0; s < spp; ++s) {
+          Rng rng = pixelRng(seed, W, x, y, s);
+          const float fx = rng.nextFloat(), fy = rng.nextFloat();
+          pos.emplace_back(x + fx, y + fy);
+          pix.push_back(y * W + x);
+          seeds.push_back(hashMix(seed, static_cast<uint64_t>(y) * W + x, 0xF1A1000000ULL + s));
+        }
+    std::vector<Primary> prim;
+    primaries(pos, pix, seeds, prim);
+    cameraRays += prim.size();
+    std::vector<ShadePoint> pts(prim.size());
+    for (size_t i = 0; i < prim.size(); ++i) pts[i] = prim[i].sp;
+    std::vector<Color> direct(pts.size(), Color(0.0f));
+    parallelFor(pts.size(), 64, [&](size_t b, size_t e) {
+      for (size_t i = b; i < e; ++i) {
+        if (!pts[i].active || (maxDepth >= 0 && 2 > maxDepth)) continue;
+        Rng rng(pts[i].seed, 1);
+        direct[i] = directLight(ctx, pts[i].hit, pts[i].frame, pts[i].wo, *scene.bsdfs[pts[i].hit.bsdf], rng);
+      }
+    });
+    std::vector<Color> ind;
+    std::vector<LookupAov> aov;
+    engine.indirect(pts, ind, &aov);
+    auto tile = std::make_unique<TileFilm>(film.makeTile(0, y0, W, y1));
+    for (size_t i = 0; i < pts.size(); ++i) {
+      const Color L = prim[i].Le + direct[i] + ind[i];
+      const int px = pix[i] % W, py = pix[i] / W;
+      if (isFinite(L)) tile->splat(prim[i].filmPos, L);
+      else ++nanSamples;
+      if (aovRadius) tile->addAov("radius", px, py, Color(aov[i].meanA, aov[i].meanRadiusPx, 0.0f));
+      if (aovContrib) tile->addAov("contributors", px, py, Color(float(aov[i].contributors)));
+      if (aovTech) {
+        // red: BSDF sampling, green: irradiance cache (diffuse), blue: radiance cache (glossy)
+        Color c(0.0f);
+        const int t = engine.technique(pts[i]);
+        if (t == 2) c = Color(1, 0, 0);
+        else if (t == 1) {
+          const auto& plan = tables.plans()[pts[i].hit.bsdf];
+          c = plan.technique == kTechniqueIrradianceCache ? Color(0, 1, 0) : Color(0, 0, 1);
+        }
+        tile->addAov("technique", px, py, c);
+      }
+    }
+    bandFilms[static_cast<size_t>(band)] = std::move(tile);
+  };
+  int lastCreating = -1;
+  for (int band = 0; band < bands; ++band) {
+    if (cancelled()) {
+      interrupted = true;
+      break;
+    }
+    const size_t before = totalRecords();
+    renderBand(band);
+    if (totalRecords() != before) lastCreating = band;
+    if (ctx.progress) ctx.progress("render", double(band + 1), double(bands));
+  }
+  // Reshading cannot create records: the caches only grew since, and every point it reaches was
+  // covered then (same seeds, same paths).
+  int reshaded = 0;
+  for (int band = 0; band < lastCreating && !interrupted; ++band, ++reshaded) {
+    if (cancelled()) {
+      interrupted = true;
+      break;
+    }
+    renderBand(band);
+  }
+  for (auto& t : bandFilms)
+    if (t) film.merge(*t);
+  const double finalS = since(t0);
+
+  Image img = film.develop();
+  if (aovRecords) {
+    std::vector<Color> layer(static_cast<size_t>(W) * H, Color(0.0f));
+    for (int p : engine.recordPixels())
+      if (p >= 0 && p < W * H) layer[static_cast<size_t>(p)] += Color(1.0f);
+    img.aovs["records"] = layer;
+  }
+
+  if (!ctx.options.cacheSave.empty() && !interrupted) {
+    std::vector<CacheFileEntry> entries;
+    for (auto& [key, cache] : engine.caches()) {
+      CacheFileEntry e;
+      e.key = key;
+      cache->snapshot(e.infos, e.lambda, e.gradT, e.gradB);
+      entries.push_back(std::move(e));
+    }
+    saveCacheFile(ctx.options.cacheSave, hash, entries);
+  }
+
+  // ---- statistics ----
+  EngineStats& es = engine.stats();
+  const double total = since(tStart);
+  stats.set("time_s", total);
+  stats.set("time_brdf_tables_s", tablesS);
+  stats.set("time_cache_fill_s", fillS);
+  stats.set("time_final_pass_s", finalS);
+  const double leaf = es.projection_s + es.interpolation_s + es.dot_s;
+  stats.set("time_sampling_s", std::max(0.0, fillS + finalS - leaf - es.adaptive_s));
+  stats.set("time_projection_s", es.projection_s);
+  stats.set("time_interpolation_s", es.interpolation_s);
+  stats.set("time_dot_s", es.dot_s);
+  stats.set("time_adaptive_check_s", es.adaptive_s);
+  size_t records = 0, glossyRecords = 0, level0 = 0;
+  std::ostringstream cj;
+  cj << "[";
+  bool first = true;
+  for (auto& [key, cache] : engine.caches()) {
+    records += cache->size();
+    if (key.order > 3) glossyRecords += cache->size();
+    if (key.level == 0) level0 += cache->size();
+    cj << (first ? "" : ",") << "{\"level\":" << key.level << ",\"depth\":" << key.depth << ",\"order\":" << key.order
+       << ",\"records\":" << cache->size() << "}";
+    first = false;
+  }
+  cj << "]";
+  stats.set("records", double(records));
+  stats.set("records_primary", double(level0));
+  stats.set("records_loaded", double(recordsLoaded));
+  stats.set("records_glossy", double(glossyRecords));
+  stats.setJson("caches", cj.str());
+  stats.set("rays_record", double(es.recordRays.load()));
+  stats.set("rays_camera", double(cameraRays));
+  stats.set("rays_path", double(es.pathRays.load()));
+  stats.set("rays_total", double(ctx.accel.raysTraced()));
+  // "rays" and "rays_per_s" carry the same meaning as in the path tracer's statistics.
+  stats.set("rays", double(ctx.accel.raysTraced()));
+  stats.set("rays_per_s", total > 0 ? double(ctx.accel.raysTraced()) / total : 0.0);
+  stats.set("lookups", double(es.lookups.load()));
+  stats.set("records_per_lookup", es.lookups ? double(es.contributions.load()) / double(es.lookups.load()) : 0.0);
+  stats.set("adaptive_shrinks", double(es.adaptiveShrinks.load()));
+  stats.set("samples_dropped_nan", double(es.droppedSamples.load() + nanSamples));
+  stats.set("bands_reshaded", double(reshaded));
+  const KernelTimes& kt = backend->times();
+  stats.set("kernel_project_s", kt.project_s);
+  stats.set("kernel_rotate_s", kt.rotate_s);
+  stats.set("kernel_interpolate_s", kt.interpolate_s);
+  stats.set("kernel_brdf_dot_s", kt.brdfDot_s);
+  stats.setText("device", backend->deviceName());
+  stats.setText("interpolation_frame", params_.worldFrame ? "world" : "record");
+  stats.setText("mode", params_.tlMode ? "tl (Tabellion-Lamorlette dominant direction)" : "radiance");
+  stats.setJson("materials", tables.materialsJson());
+  std::string skipped;
+  bool anyGlossy = false, anyCached = false;
+  for (const auto& p : tables.plans()) {
+    anyGlossy |= p.technique == kTechniqueRadianceCache;
+    anyCached |= p.tableIndex >= 0;
+  }
+  if (!anyGlossy) skipped += "no glossy material: no glossy radiance cache, no glossy BRDF tables; ";
+  if (!anyCached) skipped += "no cached material: no BRDF tables, no records; ";
+  if (loaded) skipped += "cache fill passes (cache loaded from " + ctx.options.cacheLoad + "); ";
+  stats.setText("skipped", skipped.empty() ? "nothing" : skipped);
+  if (interrupted) stats.set("interrupted", 1.0);
+  return img;
+}
+
+}  // namespace
+
+std::unique_ptr<Integrator> makeRcacheIntegrator(const IntegratorSettings& settings) {
+  return std::make_unique<RcacheIntegrator>(settings);
+}
+
+}  // namespace rc

@@ -1,0 +1,43 @@
+#pragma once
+// A surface point to be shaded by the cache engine: the hit, its (possibly flipped) shading
+// frame, the viewing direction, and where it sits on the path (depth for max_depth, level =
+// number of diffuse/glossy vertices before it, which selects the cache and its accuracy).
+#include <cstdint>
+
+#include "core/frame.h"
+#include "geometry/accel.h"
+
+namespace rc {
+
+struct ShadePoint {
+  Hit hit;
+  Frame frame;           // shading frame; for two-sided BSDFs seen from behind, flipped to the viewer
+  Vec3 wo{0, 0, 1};      // toward the viewer, local frame
+  int depth = 1;         // path segments from the camera (camera hit = 1, Mitsuba's depth)
+  int level = 0;         // diffuse/glossy vertices before this point
+  uint64_t seed = 0;     // this point's RNG stream (Rng(seed, 1)), independent of scheduling
+  int pixel = -1;        // camera pixel it came from (primary points), for AOVs
+  bool active = false;   // false: nothing to shade (miss, no BSDF, back of a one-sided BSDF)
+};
+
+// Builds the shade point of a ray's hit (dir = ray direction, world).
+inline ShadePoint makeShadePoint(const Hit& hit, const Vec3& dir, int depth, int level, uint64_t seed,
+                                 bool twoSided) {
+  ShadePoint sp;
+  sp.hit = hit;
+  sp.depth = depth;
+  sp.level = level;
+  sp.seed = seed;
+  if (!hit.valid() || hit.bsdf < 0) return sp;
+  sp.frame = hit.frame();
+  sp.wo = sp.frame.toLocal(-dir);
+  if (sp.wo.z <= 0.0f && twoSided) {
+    // Mirror the frame to the viewer's side (still right-handed: t × (−b) = −n).
+    sp.frame = Frame(sp.frame.t, -sp.frame.b, -sp.frame.n);
+    sp.wo = sp.frame.toLocal(-dir);
+  }
+  sp.active = true;
+  return sp;
+}
+
+}  // namespace rc

@@ -1,0 +1,49 @@
+#pragma once
+// ShBackend on one OpenCL device: kernels/*.cl built once per SH order into one program
+// (-D RC_ORDER=n -D RC_VEC=w), batches split so every buffer fits CL_DEVICE_MAX_MEM_ALLOC_SIZE.
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "cl/cl_runtime.h"
+#include "cl/sh_backend.h"
+
+namespace rc {
+
+class OpenClBackend final : public ShBackend {
+ public:
+  explicit OpenClBackend(const cl::DeviceInfo& device);
+  ~OpenClBackend() override;
+
+  std::string deviceName() const override;
+  bool isOpenCl() const override { return true; }
+  void project(const ProjectBatch& batch, ProjectResult& out) override;
+  void rotate(const RotateBatch& batch, std::vector<float>& out) override;
+  void interpolate(const InterpolateBatch& batch, std::vector<float>& out) override;
+  void brdfDot(const BrdfDotBatch& batch, std::vector<float>& out) override;
+
+  // Builds (or fetches from the process-wide cache) the program of one order; throws rc::Error
+  // with the build log on failure. Used by "auto" to test that the device really works.
+  void prepare(int order);
+  const cl::DeviceInfo& device() const { return ctx_->info(); }
+  // Largest buffer this backend allocates (min of the device's max allocation and a soft cap);
+  // tests lower it to exercise batch splitting.
+  void setMaxBufferBytes(size_t bytes) { maxBuffer_ = bytes; }
+  size_t maxBufferBytes() const { return maxBuffer_; }
+
+ private:
+  struct OrderState;
+  OrderState& state(int order);
+  void ensureBasis(OrderState& st, const ProjectBatch& batch);
+
+  std::shared_ptr<cl::Context> ctx_;
+  std::map<int, std::unique_ptr<OrderState>> states_;
+  int vec_ = 8;
+  int gemmLocal_ = 0;
+  size_t maxBuffer_ = 0;
+  std::mutex mutex_;
+};
+
+}  // namespace rc

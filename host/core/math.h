@@ -1,0 +1,23 @@
+#pragma once
+// Basic math types: GLM vectors in float for rendering; references use double explicitly.
+#include <cmath>
+#include <glm/glm.hpp>
+
+namespace rc {
+
+using Vec2 = glm::vec2;
+using Vec3 = glm::vec3;
+using Vec4 = glm::vec4;
+using Mat3 = glm::mat3;
+using Mat4 = glm::mat4;
+using Color = glm::vec3;  // linear RGB
+
+constexpr float kPi = 3.14159265358979323846f;
+constexpr float kInvPi = 0.31830988618379067154f;
+constexpr double kPiD = 3.14159265358979323846;
+
+inline float luminance(const Color& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+inline bool isFinite(const Color& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
+inline float maxComponent(const Color& c) { return std::fmax(c.r, std::fmax(c.g, c.b)); }
+
+}  // namespace rc

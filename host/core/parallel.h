@@ -1,0 +1,17 @@
+#pragma once
+// Minimal parallel-for over an index range with dynamic chunking. Results must not depend on
+// which thread runs which chunk: callers seed RNGs by index, never by thread.
+#include <cstddef>
+#include <functional>
+
+namespace rc {
+
+// Number of threads used by parallelFor; 0 = all hardware threads. Set once from the CLI (-t).
+void setThreadCount(int threads);
+int threadCount();
+
+// Calls body(begin, end) for chunks of [0, n); blocks until done. Exceptions are rethrown on the
+// calling thread (the first one wins).
+void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t)>& body);
+
+}  // namespace rc

@@ -1,0 +1,68 @@
+#pragma once
+// Ray-scene intersection over an Embree 3 BVH (triangle meshes + analytic spheres as user geometry).
+#include <cstdint>
+#include <limits>
+#include <memory>
+
+#include "core/frame.h"
+#include "core/math.h"
+#include "scene/scene.h"
+
+namespace rc {
+
+struct Ray {
+  Vec3 o{0.0f}, d{0, 0, 1};
+  float tMin = 0.0f;
+  float tMax = std::numeric_limits<float>::infinity();
+};
+
+// Everything shading needs about a hit.
+struct Hit {
+  float t = std::numeric_limits<float>::infinity();  // inf = miss
+  Vec3 p{0.0f};
+  Vec3 ng{0, 0, 1};        // geometric normal (unit), as the shape is oriented (not flipped toward ray)
+  Vec3 ns{0, 0, 1};        // interpolated shading normal (unit), same side as ng
+  Vec3 dpdu{0.0f};         // mesh tangent from uvs when available, else zero
+  Vec2 uv{0.0f};
+  int bsdf = -1;
+  int emitter = -1;        // area emitter index or -1
+  int mesh = -1, sphere = -1, prim = -1;
+  float pError = 0.0f;     // absolute bound on the error of p (from the shape's coordinate magnitudes)
+  bool valid() const { return t < std::numeric_limits<float>::infinity(); }
+  // Shading frame: built from ns (and dpdu when anisotropic materials need it).
+  Frame frame() const { return glm::dot(dpdu, dpdu) > 0.0f ? Frame::fromNormalTangent(ns, dpdu) : Frame::fromNormal(ns); }
+};
+
+class Accel {
+ public:
+  explicit Accel(const Scene& scene);  // throws rc::Error on Embree failure (with Embree's message)
+  ~Accel();
+  Accel(const Accel&) = delete;
+  Accel& operator=(const Accel&) = delete;
+
+  Hit intersect(const Ray& ray) const;
+  bool occluded(const Ray& ray) const;
+  // Batched (Embree stream/packet API inside); hits[i].t = inf on miss.
+  void intersect(const Ray* rays, Hit* hits, size_t count) const;
+
+  // Offset origin for a ray leaving surface point p with geometric normal ng toward d,
+  // robust against self-intersection at any scene scale.
+  static Vec3 offsetOrigin(const Vec3& p, const Vec3& ng, const Vec3& d);
+  // Preferred: also uses the hit's position error bound (robust where p is near the origin but the
+  // shape's coordinates are large).
+  static Vec3 offsetOrigin(const Hit& hit, const Vec3& d);
+  // Ray leaving a surface hit toward direction d (unit), offset against self-intersection.
+  static Ray spawnRay(const Hit& hit, const Vec3& d);
+  // Shadow ray from a surface hit to point `target` (stopping just short of it).
+  static Ray spawnRayTo(const Hit& hit, const Vec3& target);
+
+  const Scene& scene() const { return scene_; }
+  uint64_t raysTraced() const;  // total rays (intersect + occluded), for statistics
+
+ private:
+  struct Impl;
+  const Scene& scene_;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rc

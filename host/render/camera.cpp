@@ -1,0 +1,60 @@
+#include "render/camera.h"
+
+#include <algorithm>
+
+#include "core/error.h"
+
+namespace rc {
+
+namespace {
+constexpr float kDegToRad = kPi / 180.0f;
+}
+
+float horizontalFovDegrees(float fov, const std::string& axisIn, float aspect) {
+  std::string axis = axisIn;
+  if (axis == "smaller") axis = aspect > 1.0f ? "y" : "x";
+  else if (axis == "larger") axis = aspect > 1.0f ? "x" : "y";
+  if (axis == "x") return fov;
+  if (axis == "y") return 2.0f * std::atan(std::tan(0.5f * fov * kDegToRad) * aspect) / kDegToRad;
+  if (axis == "diagonal") {
+    const float diagonal = 2.0f * std::tan(0.5f * fov * kDegToRad);
+    const float width = diagonal / std::sqrt(1.0f + 1.0f / (aspect * aspect));
+    return 2.0f * std::atan(0.5f * width) / kDegToRad;
+  }
+  throw Error("perspective sensor: unknown fov_axis '" + axisIn + "' (x, y, diagonal, smaller, larger)");
+}
+
+CameraModel::CameraModel(const Camera& camera, int width, int height)
+    : toWorld_(camera.toWorld), width_(width), height_(height), nearClip_(camera.nearClip), farClip_(camera.farClip) {
+  if (width <= 0 || height <= 0) throw Error("film: width and height must be positive");
+  if (!(camera.fovDegrees > 0.0f && camera.fovDegrees < 180.0f))
+    throw Error("perspective sensor: fov must be in (0, 180) degrees");
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  fovX_ = horizontalFovDegrees(camera.fovDegrees, camera.fovAxis, aspect);
+  tanHalfX_ = std::tan(0.5f * fovX_ * kDegToRad);
+  tanHalfY_ = tanHalfX_ / aspect;
+  origin_ = Vec3(toWorld_ * Vec4(0, 0, 0, 1));
+  forward_ = glm::normalize(Vec3(toWorld_ * Vec4(0, 0, 1, 0)));
+}
+
+Ray CameraModel::generate(Vec2 filmPos) const {
+  // Mitsuba 3 perspective_projection: sample x = 0.5·(1 − x_ndc), y = 0.5·(1 − aspect·y_ndc) with
+  // x_ndc = x/(z·tan(fov_x/2)); so image left (u = 0) is local +x and image top is local +y.
+  const float sx = filmPos.x / static_cast<float>(width_);
+  const float sy = filmPos.y / static_cast<float>(height_);
+  const Vec3 local((1.0f - 2.0f * sx) * tanHalfX_, (1.0f - 2.0f * sy) * tanHalfY_, 1.0f);
+  Ray r;
+  r.o = origin_;
+  r.d = glm::normalize(Vec3(toWorld_ * Vec4(local, 0.0f)));
+  // Clip planes are depths along the view axis, as in Mitsuba: t = clip / cos(angle to the axis).
+  const float len = glm::length(local);
+  r.tMin = nearClip_ * len;
+  r.tMax = farClip_ * len;
+  return r;
+}
+
+float CameraModel::pixelFootprint(float distance) const {
+  return 2.0f * tanHalfX_ * distance / static_cast<float>(width_);
+}
+
+}  // namespace rc

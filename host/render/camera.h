@@ -1,0 +1,39 @@
+#pragma once
+// Pinhole camera with Mitsuba 3 `perspective` conventions: the camera looks down local +z, local +y is
+// up, and image x grows toward local −x (Mitsuba's look_at puts local +x on the image's left), so an
+// image rendered here matches Mitsuba's pixel for pixel, not mirrored.
+#include "core/math.h"
+#include "geometry/accel.h"
+#include "scene/scene.h"
+
+namespace rc {
+
+class CameraModel {
+ public:
+  CameraModel(const Camera& camera, int width, int height);
+
+  // Primary ray through a film position in pixels, (0,0) = top-left corner of the image,
+  // (width, height) = bottom-right. Direction is unit, tMin/tMax from near/far clip along it.
+  Ray generate(Vec2 filmPos) const;
+
+  // World-space size of one pixel on a plane facing the camera at `distance` along the view axis.
+  float pixelFootprint(float distance) const;
+
+  float fovXDegrees() const { return fovX_; }
+  Vec3 position() const { return origin_; }
+  Vec3 forward() const { return forward_; }
+
+ private:
+  Mat4 toWorld_;
+  Vec3 origin_, forward_;
+  int width_, height_;
+  float fovX_;        // horizontal field of view in degrees (fov_axis already resolved)
+  float tanHalfX_;    // tan(fovX/2): half-width of the image plane at z = 1
+  float tanHalfY_;    // half-height at z = 1
+  float nearClip_, farClip_;
+};
+
+// Mitsuba's parse_fov: any fov_axis → horizontal fov in degrees. aspect = width / height.
+float horizontalFovDegrees(float fovDegrees, const std::string& fovAxis, float aspect);
+
+}  // namespace rc

@@ -1,0 +1,69 @@
+#include "render/direct_light.h"
+
+#include "render/light_sampler.h"
+
+namespace rc {
+
+namespace {
+// True when the BSDF has a lobe that light sampling can hit (a non-delta component).
+bool hasSmoothLobe(const Bsdf& bsdf) { return (bsdf.lobes() & (kLobeDiffuse | kLobeGlossy)) != 0; }
+}  // namespace
+
+Color emitted(const Scene& scene, const Hit& hit, const Vec3& wo) {
+  if (!hit.valid() || hit.emitter < 0) return Color(0.0f);
+  const Emitter& e = scene.emitters[hit.emitter];
+  if (e.type != EmitterType::Area) return Color(0.0f);
+  return glm::dot(hit.ng, wo) > 0.0f ? e.radiance : Color(0.0f);
+}
+
+bool visible(const Accel& accel, const Hit& hit, const LightSample& ls) {
+  const Ray shadow = std::isinf(ls.dist) ? Accel::spawnRay(hit, ls.wi) : Accel::spawnRayTo(hit, ls.lightPoint);
+  return !accel.occluded(shadow);
+}
+
+Color sampleLightMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                     const Bsdf& bsdf, Rng& rng) {
+  // Always draw the same three numbers so the stream stays aligned whatever happens below.
+  const float uLight = rng.nextFloat();
+  const Vec2 u(rng.nextFloat(), rng.nextFloat());
+  if (ctx.lights.empty() || !hasSmoothLobe(bsdf)) return Color(0.0f);
+  const std::optional<LightSample> ls = ctx.lights.sample(hit.p, u, uLight);
+  if (!ls) return Color(0.0f);
+  const Vec3 wiLocal = frame.toLocal(ls->wi);
+  const Color f = bsdf.eval(woLocal, wiLocal);
+  if (maxComponent(f) <= 0.0f || maxComponent(ls->radiance) <= 0.0f) return Color(0.0f);
+  if (!visible(ctx.accel, hit, *ls)) return Color(0.0f);
+  const float weight = ls->delta ? 1.0f : powerHeuristic(ls->pdf, bsdf.pdf(woLocal, wiLocal));
+  return f * ls->radiance * weight;
+}
+
+Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorld, const Hit& next, float bsdfPdf,
+                 bool delta) {
+  if (next.valid()) {
+    const Color Le = emitted(ctx.scene, next, -dirWorld);
+    if (maxComponent(Le) <= 0.0f) return Color(0.0f);
+    if (delta) return Le;
+    return Le * powerHeuristic(bsdfPdf, ctx.lights.pdf(next, from));
+  }
+  if (!ctx.lights.hasEnvironment()) return Color(0.0f);
+  const Color Le = ctx.lights.environment(dirWorld);
+  if (maxComponent(Le) <= 0.0f) return Color(0.0f);
+  if (delta) return Le;
+  return Le * powerHeuristic(bsdfPdf, ctx.lights.environmentPdf(dirWorld));
+}
+
+Color directLight(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal, const Bsdf& bsdf,
+                  Rng& rng) {
+  Color L = sampleLightMis(ctx, hit, frame, woLocal, bsdf, rng);
+  const float uLobe = rng.nextFloat();
+  const Vec2 u(rng.nextFloat(), rng.nextFloat());
+  if (ctx.lights.empty()) return L;
+  const std::optional<BsdfSample> bs = bsdf.sample(woLocal, uLobe, u);
+  if (!bs || maxComponent(bs->weight) <= 0.0f) return L;
+  const Vec3 dir = frame.toWorld(bs->wi);
+  const Hit next = ctx.accel.intersect(Accel::spawnRay(hit, dir));
+  L += bs->weight * emitterMis(ctx, hit.p, dir, next, bs->pdf, (bs->lobe & kLobeDelta) != 0);
+  return L;
+}
+
+}  // namespace rc

@@ -1,0 +1,52 @@
+#pragma once
+// Direct illumination: next-event estimation with multiple importance sampling (light sampling +
+// BSDF sampling, power heuristic). The path tracer and the radiance-cache integrator call the very
+// same functions, so their direct light is the same estimator.
+//
+// The estimator is split in two so the path tracer can reuse its continuation ray for the BSDF
+// strategy (as Mitsuba's `path` does):
+//   sampleLightMis   — light-sampling strategy, MIS-weighted against the BSDF pdf;
+//   emitterMis       — what a BSDF-sampled ray that found `next` (or escaped) adds, MIS-weighted
+//                      against the light pdf (weight 1 after a delta lobe).
+// directLight() runs both (tracing its own BSDF ray) for callers that do not continue the path.
+#include <optional>
+
+#include "bsdf/bsdf.h"
+#include "core/frame.h"
+#include "core/rng.h"
+#include "geometry/accel.h"
+#include "render/integrator.h"
+
+namespace rc {
+
+// Radiance emitted by an area emitter at `hit` toward direction wo (world, pointing away from the
+// surface). Area emitters emit toward +ng only (Mitsuba 3).
+Color emitted(const Scene& scene, const Hit& hit, const Vec3& wo);
+
+// Power heuristic (β = 2) weight of strategy a against b.
+inline float powerHeuristic(float pdfA, float pdfB) {
+  const float a = pdfA * pdfA, b = pdfB * pdfB;
+  if (!(a > 0.0f)) return 0.0f;
+  if (std::isinf(a)) return 1.0f;
+  return a / (a + b);
+}
+
+// Light-sampling strategy at `hit`: one light sample, one shadow ray. Consumes 3 random numbers.
+Color sampleLightMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                     const Bsdf& bsdf, Rng& rng);
+
+// BSDF-sampling strategy's contribution once the sampled ray (from `from`, world direction `dirWorld`)
+// found `next` (next.valid() false = escaped to the environment). `bsdfPdf` is the continuous pdf of
+// the sample (ignored when `delta`). Returns the MIS-weighted emitted radiance (not multiplied by
+// the sample's weight).
+Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorld, const Hit& next,
+                 float bsdfPdf, bool delta);
+
+// Full direct light: sampleLightMis + one BSDF sample traced here + emitterMis. Consumes 6 numbers.
+Color directLight(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                  const Bsdf& bsdf, Rng& rng);
+
+// Shadow ray from a surface hit toward a light sample; true when the light point is visible.
+bool visible(const Accel& accel, const Hit& hit, const struct LightSample& ls);
+
+}  // namespace rc

@@ -1,0 +1,67 @@
+#pragma once
+// What every integrator gets and gives: the render context in, a film and statistics out.
+#include <atomic>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+#include "geometry/accel.h"
+#include "scene/scene.h"
+
+namespace rc {
+
+class LightSampler;  // render/light_sampler.h
+class ShBackend;     // cl/sh_backend.h
+
+struct RenderOptions {
+  int spp = 0;               // 0 = scene's sample_count
+  uint64_t seed = 0;         // added to the scene sampler's seed
+  bool quiet = false;        // no progress bar
+  std::vector<std::string> aovs;  // requested AOV names (integrator-specific)
+  std::string cacheSave;          // rcache: write the view-independent cache here after rendering
+  std::string cacheLoad;          // rcache: start from this cache file
+};
+
+// Named statistics, printed in insertion order and written to --stats JSON.
+// Numbers are doubles; text values (device, technique) strings; nested lists are JSON snippets.
+struct RenderStats {
+  std::vector<std::pair<std::string, double>> numbers;
+  std::vector<std::pair<std::string, std::string>> texts;
+  std::vector<std::pair<std::string, std::string>> json;  // key → raw JSON value (arrays/objects)
+  void set(const std::string& key, double value);
+  void setText(const std::string& key, const std::string& value);
+  void setJson(const std::string& key, const std::string& rawJson);
+  double get(const std::string& key, double fallback = 0.0) const;
+};
+
+// Linear RGB image plus optional named AOV layers, all width×height, row-major, top row first.
+struct Image {
+  int width = 0, height = 0;
+  std::vector<Color> pixels;
+  std::map<std::string, std::vector<Color>> aovs;
+};
+
+struct RenderContext {
+  const Scene& scene;
+  const Accel& accel;
+  const LightSampler& lights;
+  RenderOptions options;
+  ShBackend* backend = nullptr;  // batched SH math (rcache integrator); null for path
+  std::atomic<bool>* cancel = nullptr;  // set by SIGINT: stop early, keep what is done
+  // Progress reporting: called with (phase name, done, total); the CLI draws the bar.
+  std::function<void(const std::string&, double, double)> progress;
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  virtual std::string name() const = 0;
+  // Renders the whole image. Must honour ctx.cancel (return a partial image, pixels not yet
+  // rendered black, and set stats "interrupted" = 1).
+  virtual Image render(const RenderContext& ctx, RenderStats& stats) = 0;
+};
+
+}  // namespace rc

@@ -1,0 +1,365 @@
+#include "render/light_sampler.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "geometry/face_normal.h"
+#include "render/distribution.h"
+
+namespace rc {
+
+namespace {
+
+// Uniform direction on the unit sphere.
+Vec3 uniformSphere(Vec2 u) {
+  const float z = 1.0f - 2.0f * u.x;
+  const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+  const float phi = 2.0f * kPi * u.y;
+  return Vec3(r * std::cos(phi), r * std::sin(phi), z);
+}
+
+// Mitsuba 3 envmap orientation (local frame): θ from +y, φ measured so that
+// d = (sinθ sinφ, cosθ, −sinθ cosφ) and u = φ/2π, v = θ/π.
+Vec3 envDirection(float u, float v) {
+  const float theta = v * kPi, phi = u * 2.0f * kPi;
+  const float st = std::sin(theta);
+  return Vec3(st * std::sin(phi), std::cos(theta), -st * std::cos(phi));
+}
+
+Vec2 envUv(const Vec3& d) {
+  float u = std::atan2(d.x, -d.z) * (0.5f * kInvPi);
+  if (u < 0.0f) u += 1.0f;
+  const float v = std::acos(glm::clamp(d.y, -1.0f, 1.0f)) * kInvPi;
+  return Vec2(u, v);
+}
+
+struct Entry {
+  EmitterType type;
+  int emitter = -1;
+  // area on a mesh
+  int mesh = -1;
+  Distribution1D triangles;
+  double area = 0.0;
+  // area on a sphere
+  int sphere = -1;
+  // envmap
+  Mat3 toWorld{1.0f}, toLocal{1.0f};
+  Distribution1D rows;                 // marginal over rows
+  std::vector<Distribution1D> columns;  // conditional per row
+  std::vector<double> pixelPdfUv;      // pdf in (u,v) ∈ [0,1]² per pixel
+};
+
+}  // namespace
+
+struct LightSampler::Impl {
+  const Scene& scene;
+  std::vector<Entry> entries;
+  Distribution1D select;
+  std::vector<int> meshEntry, sphereEntry;  // shape → entry (area emitters), −1
+  std::vector<int> infinite;                // entries of constant/envmap emitters
+
+  explicit Impl(const Scene& s) : scene(s) {}
+
+  float selectProb(int e) const { return static_cast<float>(select.probability(static_cast<size_t>(e))); }
+
+  Color envLookup(const Entry& e, const Vec3& dirWorld, size_t* pixel = nullptr) const {
+    const Emitter& em = scene.emitters[e.emitter];
+    const Vec3 d = glm::normalize(e.toLocal * dirWorld);
+    const Vec2 uv = envUv(d);
+    const int x = std::min(em.envWidth - 1, static_cast<int>(uv.x * em.envWidth));
+    const int y = std::min(em.envHeight - 1, static_cast<int>(uv.y * em.envHeight));
+    const size_t i = static_cast<size_t>(y) * em.envWidth + x;
+    if (pixel) *pixel = i;
+    return em.envPixels[i] * em.scale;
+  }
+
+  float envPdf(const Entry& e, const Vec3& dirWorld) const {
+    size_t i;
+    envLookup(e, dirWorld, &i);
+    const Vec3 d = glm::normalize(e.toLocal * dirWorld);
+    const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - d.y * d.y));
+    if (!(sinTheta > 0.0f)) return 0.0f;
+    return static_cast<float>(e.pixelPdfUv[i] / (2.0 * kPiD * kPiD * sinTheta));
+  }
+};
+
+LightSampler::LightSampler(const Scene& scene) : impl_(std::make_unique<Impl>(scene)) {
+  Impl& im = *impl_;
+  im.meshEntry.assign(scene.meshes.size(), -1);
+  im.sphereEntry.assign(scene.spheres.size(), -1);
+
+  // Scene bounding sphere: infinite lights' power is measured through a disc of its radius.
+  Vec3 lo(INFINITY), hi(-INFINITY);
+  for (const Mesh& m : scene.meshes)
+    for (const Vec3& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  for (const Sphere& s : scene.spheres) lo = glm::min(lo, s.center - s.radius), hi = glm::max(hi, s.center + s.radius);
+  for (const Emitter& e : scene.emitters)
+    if (e.type == EmitterType::Point) lo = glm::min(lo, e.position), hi = glm::max(hi, e.position);
+  const double sceneRadius = lo.x <= hi.x ? std::max(1e-6, 0.5 * static_cast<double>(glm::length(hi - lo))) : 1.0;
+  const double discArea = kPiD * sceneRadius * sceneRadius;
+
+  std::vector<double> power;
+  auto addEntry = [&](Entry&& e, double p) {
+    im.entries.push_back(std::move(e));
+    power.push_back(p);
+    return static_cast<int>(im.entries.size() - 1);
+  };
+
+  // Area emitters: found from the shapes that carry them.
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const Mesh& mesh = scene.meshes[m];
+    if (mesh.emitter < 0 || mesh.triangles.empty()) continue;
+    if (mesh.emitter >= static_cast<int>(scene.emitters.size())) throw Error("mesh '" + mesh.name + "': bad emitter index");
+    Entry e;
+    e.type = EmitterType::Area;
+    e.emitter = mesh.emitter;
+    e.mesh = static_cast<int>(m);
+    std::vector<double> areas(mesh.triangles.size());
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const glm::uvec3 tri = mesh.triangles[t];
+      const glm::dvec3 p0(mesh.positions[tri.x]), p1(mesh.positions[tri.y]), p2(mesh.positions[tri.z]);
+      areas[t] = 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
+      e.area += areas[t];
+    }
+    e.triangles = Distribution1D(areas);
+    if (!(e.area > 0.0)) continue;
+    const double p = kPiD * e.area * luminance(scene.emitters[mesh.emitter].radiance);
+    im.meshEntry[m] = addEntry(std::move(e), p);
+  }
+  for (size_t s = 0; s < scene.spheres.size(); ++s) {
+    const Sphere& sp = scene.spheres[s];
+    if (sp.emitter < 0) continue;
+    if (sp.emitter >= static_cast<int>(scene.emitters.size())) throw Error("sphere '" + sp.name + "': bad emitter index");
+    Entry e;
+    e.type = EmitterType::Area;
+    e.emitter = sp.emitter;
+    e.sphere = static_cast<int>(s);
+    const double area = 4.0 * kPiD * sp.radius * sp.radius;
+    im.sphereEntry[s] = addEntry(std::move(e), kPiD * area * luminance(scene.emitters[sp.emitter].radiance));
+  }
+
+  for (size_t i = 0; i < scene.emitters.size(); ++i) {
+    const Emitter& em = scene.emitters[i];
+    Entry e;
+    e.type = em.type;
+    e.emitter = static_cast<int>(i);
+    switch (em.type) {
+      case EmitterType::Area:
+        break;  // handled with its shape
+      case EmitterType::Point:
+        addEntry(std::move(e), 4.0 * kPiD * luminance(em.intensity));
+        break;
+      case EmitterType::Directional:
+        addEntry(std::move(e), discArea * luminance(em.irradiance));
+        break;
+      case EmitterType::Constant:
+        im.infinite.push_back(addEntry(std::move(e), discArea * kPiD * luminance(em.radiance)));
+        break;
+      case EmitterType::Envmap: {
+        if (em.envWidth <= 0 || em.envHeight <= 0 ||
+            em.envPixels.size() != static_cast<size_t>(em.envWidth) * em.envHeight)
+          throw Error("envmap '" + em.filename + "': image not loaded");
+        e.toWorld = Mat3(em.toWorld);
+        e.toLocal = glm::inverse(e.toWorld);
+        // Pixel weights: luminance × sinθ at the row centre (solid angle of the pixel), so sampling
+        // follows the radiance actually seen per steradian.
+        const int W = em.envWidth, H = em.envHeight;
+        std::vector<double> rowWeights(H);
+        std::vector<double> pixelWeights(static_cast<size_t>(W) * H);
+        double total = 0.0, meanLum = 0.0, solid = 0.0;
+        for (int y = 0; y < H; ++y) {
+          const double sinTheta = std::sin((y + 0.5) * kPiD / H);
+          std::vector<double> row(W);
+          for (int x = 0; x < W; ++x) {
+            const double lum = std::max(0.0f, luminance(em.envPixels[static_cast<size_t>(y) * W + x] * em.scale));
+            row[x] = lum * sinTheta;
+            pixelWeights[static_cast<size_t>(y) * W + x] = row[x];
+            rowWeights[y] += row[x];
+            meanLum += lum * sinTheta;
+            solid += sinTheta;
+          }
+          total += rowWeights[y];
+          e.columns.emplace_back(row);
+        }
+        e.rows = Distribution1D(rowWeights);
+        e.pixelPdfUv.assign(pixelWeights.size(), 0.0);
+        if (total > 0.0)
+          for (size_t k = 0; k < pixelWeights.size(); ++k) e.pixelPdfUv[k] = pixelWeights[k] / total * W * H;
+        meanLum = solid > 0.0 ? meanLum / solid : 0.0;
+        im.infinite.push_back(addEntry(std::move(e), discArea * kPiD * meanLum));
+        break;
+      }
+    }
+  }
+  if (!im.entries.empty()) im.select = Distribution1D(power);
+}
+
+LightSampler::~LightSampler() = default;
+
+bool LightSampler::empty() const { return impl_->entries.empty(); }
+size_t LightSampler::emitterCount() const { return impl_->entries.size(); }
+bool LightSampler::hasEnvironment() const { return !impl_->infinite.empty(); }
+
+std::optional<LightSample> LightSampler::sample(const Vec3& p, Vec2 u, float uLight) const {
+  const Impl& im = *impl_;
+  if (im.entries.empty()) return std::nullopt;
+  const int k = static_cast<int>(im.select.sample(uLight));
+  const float pSel = im.selectProb(k);
+  if (!(pSel > 0.0f)) return std::nullopt;
+  const Entry& e = im.entries[k];
+  const Emitter& em = im.scene.emitters[e.emitter];
+  LightSample ls;
+
+  // Area light at point q with normal n and area pdf pArea → solid angle at p.
+  auto finishArea = [&](const Vec3& q, const Vec3& n, float pdfSolidNoSel) -> std::optional<LightSample> {
+    const Vec3 toLight = q - p;
+    const float dist2 = glm::dot(toLight, toLight);
+    if (!(dist2 > 0.0f)) return std::nullopt;
+    const float dist = std::sqrt(dist2);
+    ls.wi = toLight / dist;
+    ls.dist = dist;
+    if (!(glm::dot(n, -ls.wi) > 0.0f)) return std::nullopt;  // emits toward +n only
+    ls.pdf = pdfSolidNoSel * pSel;
+    if (!(ls.pdf > 0.0f) || !std::isfinite(ls.pdf)) return std::nullopt;
+    ls.radiance = em.radiance / ls.pdf;
+    ls.lightPoint = q;
+    ls.lightNormal = n;
+    return ls;
+  };
+
+  switch (e.type) {
+    case EmitterType::Area: {
+      if (e.mesh >= 0) {
+        const Mesh& mesh = im.scene.meshes[e.mesh];
+        float ux;
+        const size_t t = e.triangles.sample(u.x, &ux);
+        const glm::uvec3 tri = mesh.triangles[t];
+        const float su = std::sqrt(ux);
+        const float b0 = 1.0f - su, b1 = u.y * su;
+        const Vec3 q = b0 * mesh.positions[tri.x] + b1 * mesh.positions[tri.y] + (1.0f - b0 - b1) * mesh.positions[tri.z];
+        const Vec3 n = orientedFaceNormal(mesh, t);
+        const Vec3 toLight = q - p;
+        const float dist2 = glm::dot(toLight, toLight);
+        const float cosL = std::fabs(glm::dot(n, toLight)) / std::sqrt(dist2);
+        return finishArea(q, n, static_cast<float>(dist2 / (e.area * cosL)));
+      }
+      const Sphere& s = im.scene.spheres[e.sphere];
+      const Vec3 toCenter = s.center - p;
+      const float dc2 = glm::dot(toCenter, toCenter);
+      const float r2 = s.radius * s.radius;
+      if (dc2 > r2 * 1.0001f) {
+        // Outside: uniform in the cone of directions that see the sphere.
+        const float dc = std::sqrt(dc2);
+        const float sin2Max = r2 / dc2;
+        const float cosMax = std::sqrt(std::max(0.0f, 1.0f - sin2Max));
+        const float oneMinusCosMax = sin2Max / (1.0f + cosMax);  // no cancellation for small cones
+        const float cosT = 1.0f - u.x * oneMinusCosMax;
+        const float sinT = std::sqrt(std::max(0.0f, 1.0f - cosT * cosT));
+        const float phi = 2.0f * kPi * u.y;
+        const Frame f = Frame::fromNormal(toCenter / dc);
+        const Vec3 w = f.toWorld(Vec3(sinT * std::cos(phi), sinT * std::sin(phi), cosT));
+        // Distance to the near intersection along w (clamped at the silhouette).
+        const float ds = dc * cosT - std::sqrt(std::max(0.0f, r2 - dc2 * sinT * sinT));
+        const Vec3 q = p + ds * w;
+        Vec3 n = glm::normalize(q - s.center);
+        if (s.flipNormals) n = -n;
+        return finishArea(q, n, 1.0f / (2.0f * kPi * oneMinusCosMax));
+      }
+      // Inside (or on) the sphere: uniform on its area.
+      const Vec3 dirOut = uniformSphere(u);
+      const Vec3 q = s.center + s.radius * dirOut;
+      const Vec3 n = s.flipNormals ? -dirOut : dirOut;
+      const Vec3 toLight = q - p;
+      const float dist2 = glm::dot(toLight, toLight);
+      const float cosL = std::fabs(glm::dot(n, toLight)) / std::sqrt(dist2);
+      return finishArea(q, n, dist2 / (4.0f * kPi * r2 * cosL));
+    }
+    case EmitterType::Point: {
+      const Vec3 toLight = em.position - p;
+      const float dist2 = glm::dot(toLight, toLight);
+      if (!(dist2 > 0.0f)) return std::nullopt;
+      ls.dist = std::sqrt(dist2);
+      ls.wi = toLight / ls.dist;
+      ls.delta = true;
+      ls.pdf = 0.0f;
+      ls.radiance = em.intensity / (dist2 * pSel);
+      ls.lightPoint = em.position;
+      return ls;
+    }
+    case EmitterType::Directional:
+      ls.wi = -glm::normalize(em.direction);
+      ls.delta = true;
+      ls.radiance = em.irradiance / pSel;
+      return ls;
+    case EmitterType::Constant:
+      ls.wi = uniformSphere(u);
+      ls.pdf = environmentPdf(ls.wi);  // MIS-consistent: all infinite emitters' densities summed
+      ls.radiance = environment(ls.wi) / ls.pdf;
+      return ls.pdf > 0.0f ? std::optional<LightSample>(ls) : std::nullopt;
+    case EmitterType::Envmap: {
+      float ux;
+      const size_t y = e.rows.sample(u.y, nullptr);
+      float vy;
+      e.rows.sample(u.y, &vy);
+      const size_t x = e.columns[y].sample(u.x, &ux);
+      const float uu = (static_cast<float>(x) + ux) / em.envWidth;
+      const float vv = (static_cast<float>(y) + vy) / em.envHeight;
+      ls.wi = glm::normalize(e.toWorld * envDirection(uu, vv));
+      ls.pdf = environmentPdf(ls.wi);
+      ls.radiance = environment(ls.wi) / ls.pdf;
+      return ls.pdf > 0.0f && std::isfinite(ls.pdf) ? std::optional<LightSample>(ls) : std::nullopt;
+    }
+  }
+  return std::nullopt;
+}
+
+float LightSampler::pdf(const Hit& lightHit, const Vec3& from) const {
+  const Impl& im = *impl_;
+  if (!lightHit.valid() || lightHit.emitter < 0) return 0.0f;
+  int k = -1;
+  if (lightHit.mesh >= 0) k = im.meshEntry[lightHit.mesh];
+  else if (lightHit.sphere >= 0) k = im.sphereEntry[lightHit.sphere];
+  if (k < 0) return 0.0f;
+  const float pSel = im.selectProb(k);
+  const Entry& e = im.entries[k];
+  const Vec3 toLight = lightHit.p - from;
+  const float dist2 = glm::dot(toLight, toLight);
+  if (!(dist2 > 0.0f)) return 0.0f;
+  const float cosL = std::fabs(glm::dot(lightHit.ng, toLight)) / std::sqrt(dist2);
+  if (!(cosL > 0.0f)) return 0.0f;
+  if (e.mesh >= 0) return pSel * static_cast<float>(dist2 / (e.area * cosL));
+  const Sphere& s = im.scene.spheres[e.sphere];
+  const Vec3 toCenter = s.center - from;
+  const float dc2 = glm::dot(toCenter, toCenter), r2 = s.radius * s.radius;
+  if (dc2 > r2 * 1.0001f) {
+    const float sin2Max = r2 / dc2;
+    const float cosMax = std::sqrt(std::max(0.0f, 1.0f - sin2Max));
+    return pSel / (2.0f * kPi * (sin2Max / (1.0f + cosMax)));
+  }
+  return pSel * dist2 / (4.0f * kPi * r2 * cosL);
+}
+
+Color LightSampler::environment(const Vec3& dir) const {
+  const Impl& im = *impl_;
+  Color L(0.0f);
+  for (int k : im.infinite) {
+    const Entry& e = im.entries[k];
+    if (e.type == EmitterType::Constant) L += im.scene.emitters[e.emitter].radiance;
+    else L += im.envLookup(e, dir);
+  }
+  return L;
+}
+
+float LightSampler::environmentPdf(const Vec3& dir) const {
+  const Impl& im = *impl_;
+  float pdf = 0.0f;
+  for (int k : im.infinite) {
+    const Entry& e = im.entries[k];
+    const float p = e.type == EmitterType::Constant ? 1.0f / (4.0f * kPi) : im.envPdf(e, dir);
+    pdf += im.selectProb(k) * p;
+  }
+  return pdf;
+}
+
+}  // namespace rc

@@ -1,0 +1,117 @@
+#include "render/path_integrator.h"
+
+#include <chrono>
+
+#include "core/error.h"
+#include "render/camera.h"
+#include "render/direct_light.h"
+#include "render/film.h"
+#include "render/light_sampler.h"
+#include "render/render_loop.h"
+
+namespace rc {
+
+Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings, const Ray& cameraRay, Rng& rng) {
+  const Scene& scene = ctx.scene;
+  const int maxDepth = settings.maxDepth;
+  if (maxDepth == 0) return Color(0.0f);
+  Color L(0.0f), throughput(1.0f);
+  float eta = 1.0f;  // accumulated relative IOR, for Russian roulette as Mitsuba
+  Ray ray = cameraRay;
+  Vec3 prevP(0.0f);
+  float prevPdf = 0.0f;
+  bool prevDelta = true;
+  for (int depth = 0;; ++depth) {
+    const Hit hit = ctx.accel.intersect(ray);
+
+    // Emission found by this segment: full weight for the camera ray, MIS against light sampling after.
+    if (depth == 0) {
+      if (!settings.hideEmitters)
+        L += throughput * (hit.valid() ? emitted(scene, hit, -ray.d) : ctx.lights.environment(ray.d));
+    } else {
+      L += throughput * emitterMis(ctx, prevP, ray.d, hit, prevPdf, prevDelta);
+    }
+    if (!hit.valid()) break;
+    // Mitsuba: a vertex may extend the path only while the path has fewer than max_depth segments.
+    if (maxDepth >= 0 && depth + 1 >= maxDepth) break;
+    if (hit.bsdf < 0 || hit.bsdf >= static_cast<int>(scene.bsdfs.size()) || !scene.bsdfs[hit.bsdf]) break;
+    const Bsdf& bsdf = *scene.bsdfs[hit.bsdf];
+    const Frame frame = hit.frame();
+    const Vec3 wo = frame.toLocal(-ray.d);
+
+    L += throughput * sampleLightMis(ctx, hit, frame, wo, bsdf, rng);
+
+    const float uLobe = rng.nextFloat();
+    const Vec2 u(rng.nextFloat(), rng.nextFloat());
+    const std::optional<BsdfSample> bs = bsdf.sample(wo, uLobe, u);
+    if (!bs) break;
+    throughput *= bs->weight;
+    eta *= bs->eta;
+    if (!(maxComponent(throughput) > 0.0f) || !isFinite(throughput)) break;
+    const Vec3 dir = frame.toWorld(bs->wi);
+    prevP = hit.p;
+    prevPdf = bs->pdf;
+    prevDelta = (bs->lobe & kLobeDelta) != 0;
+    ray = Accel::spawnRay(hit, dir);
+
+    // Russian roulette (Mitsuba 3): once depth ≥ rr_depth, continue with q = min(max(β)·η², 0.95).
+    const int segments = depth + 1;
+    const float uRr = rng.nextFloat();
+    if (segments >= settings.rrDepth) {
+      const float q = std::min(maxComponent(throughput) * eta * eta, 0.95f);
+      if (!(uRr < q)) break;
+      throughput /= q;
+    }
+  }
+  return L;
+}
+
+namespace {
+
+class PathIntegrator final : public Integrator {
+ public:
+  explicit PathIntegrator(const IntegratorSettings& s) : settings_(s) {
+    if (s.maxDepth < -1) throw Error("integrator path: max_depth must be -1 (unbounded) or ≥ 0");
+    if (s.rrDepth < 1) throw Error("integrator path: rr_depth must be ≥ 1");
+  }
+  std::string name() const override { return "path"; }
+
+  Image render(const RenderContext& ctx, RenderStats& stats) override {
+    const auto start = std::chrono::steady_clock::now();
+    const uint64_t rays0 = ctx.accel.raysTraced();
+    Film film(ctx.scene.film);
+    const CameraModel camera(ctx.scene.camera, film.width(), film.height());
+    RenderLoopSettings loop;
+    loop.spp = ctx.options.spp > 0 ? ctx.options.spp : ctx.scene.sampleCount;
+    if (loop.spp <= 0) throw Error("sampler: sample_count must be positive");
+    loop.seed = ctx.scene.samplerSeed + ctx.options.seed;
+    loop.phase = "path";
+    const RenderLoopResult result = renderSamples(ctx, film, loop, [&](const SampleInput& in, Rng& rng, TileFilm&) {
+      return pathRadiance(ctx, settings_, camera.generate(in.filmPos), rng);
+    });
+    Image image = film.develop();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double rays = static_cast<double>(ctx.accel.raysTraced() - rays0);
+    stats.setText("integrator", "path");
+    stats.set("time_s", seconds);
+    stats.set("spp", loop.spp);
+    stats.set("samples", static_cast<double>(result.samples));
+    stats.set("nan_samples", static_cast<double>(result.nanSamples));
+    stats.set("rays", rays);
+    stats.set("rays_per_s", seconds > 0.0 ? rays / seconds : 0.0);
+    stats.set("time_per_spp_s", seconds / loop.spp);
+    if (result.interrupted) stats.set("interrupted", 1.0);
+    return image;
+  }
+
+ private:
+  IntegratorSettings settings_;
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> makePathIntegrator(const IntegratorSettings& settings) {
+  return std::make_unique<PathIntegrator>(settings);
+}
+
+}  // namespace rc

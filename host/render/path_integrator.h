@@ -1,0 +1,20 @@
+#pragma once
+// Unidirectional path tracer with Mitsuba 3 `path` semantics: max_depth (−1 unbounded, 1 = directly
+// visible emission only), Russian roulette after rr_depth on the throughput, hide_emitters, BSDF and
+// light sampling combined by MIS. The ground truth every cached render must converge to.
+#include <memory>
+
+#include "core/rng.h"
+#include "render/integrator.h"
+
+namespace rc {
+
+std::unique_ptr<Integrator> makePathIntegrator(const IntegratorSettings& settings);
+
+}  // namespace rc
+
+namespace rc {
+// Radiance along one camera ray (one path sample); the integrator's per-sample work, exposed for
+// integrators that fall back to path tracing (e.g. behind delta lobes) and for tests.
+Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings, const Ray& ray, Rng& rng);
+}  // namespace rc

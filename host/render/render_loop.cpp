@@ -1,0 +1,96 @@
+#include "render/render_loop.h"
+
+#include <algorithm>
+#include <atomic>
+#include <memory>
+#include <mutex>
+
+#include "core/parallel.h"
+
+namespace rc {
+
+namespace {
+
+struct TileRect {
+  int x0, y0, x1, y1;
+};
+
+std::vector<TileRect> makeTiles(int width, int height, int size) {
+  std::vector<TileRect> tiles;
+  for (int y = 0; y < height; y += size)
+    for (int x = 0; x < width; x += size) tiles.push_back({x, y, std::min(width, x + size), std::min(height, y + size)});
+  return tiles;
+}
+
+}  // namespace
+
+RenderLoopResult renderTiles(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
+                             const TileFn& fn) {
+  const int size = std::max(1, settings.tileSize);
+  const std::vector<TileRect> rects = makeTiles(film.width(), film.height(), size);
+  // Tiles are kept until all are done and merged in index order: float sums then do not depend on
+  // the order in which threads finished.
+  std::vector<std::unique_ptr<TileFilm>> done(rects.size());
+  std::mutex progressMutex;
+  size_t finished = 0;
+  std::atomic<bool> interrupted{false};
+  if (ctx.progress) ctx.progress(settings.phase, 0.0, static_cast<double>(rects.size()));
+
+  parallelFor(rects.size(), 1, [&](size_t begin, size_t end) {
+    for (size_t t = begin; t < end; ++t) {
+      if (ctx.cancel && ctx.cancel->load(std::memory_order_relaxed)) {
+        interrupted = true;
+        continue;
+      }
+      const TileRect& r = rects[t];
+      auto tile = std::make_unique<TileFilm>(film.makeTile(r.x0, r.y0, r.x1, r.y1));
+      fn(*tile);
+      done[t] = std::move(tile);
+      if (ctx.progress) {
+        std::lock_guard<std::mutex> lock(progressMutex);
+        ++finished;
+        ctx.progress(settings.phase, static_cast<double>(finished), static_cast<double>(rects.size()));
+      }
+    }
+  });
+
+  for (const auto& tile : done)
+    if (tile) film.merge(*tile);
+  RenderLoopResult result;
+  result.interrupted = interrupted.load();
+  return result;
+}
+
+RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
+                               const SampleFn& fn) {
+  std::atomic<uint64_t> samples{0}, nans{0};
+  const int width = film.width();
+  const int spp = std::max(1, settings.spp);
+  RenderLoopResult result = renderTiles(ctx, film, settings, [&](TileFilm& tile) {
+    uint64_t tileSamples = 0, tileNans = 0;
+    for (int py = tile.y0(); py < tile.y1(); ++py)
+      for (int px = tile.x0(); px < tile.x1(); ++px)
+        for (int s = 0; s < spp; ++s) {
+          Rng rng = pixelRng(settings.seed, width, px, py, s);
+          SampleInput in;
+          in.px = px;
+          in.py = py;
+          in.sampleIndex = s;
+          in.filmPos = Vec2(static_cast<float>(px) + rng.nextFloat(), static_cast<float>(py) + rng.nextFloat());
+          const Color L = fn(in, rng, tile);
+          if (!isFinite(L)) {
+            ++tileNans;  // dropped, never splatted
+            continue;
+          }
+          tile.splat(in.filmPos, L);
+          ++tileSamples;
+        }
+    samples += tileSamples;
+    nans += tileNans;
+  });
+  result.samples = samples.load();
+  result.nanSamples = nans.load();
+  return result;
+}
+
+}  // namespace rc

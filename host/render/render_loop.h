@@ -1,0 +1,54 @@
+#pragma once
+// Tile scheduling over the image with rc::parallelFor. Each sample of pixel (x, y) gets its own RNG
+// stream seeded by (seed, pixel index, sample index), and tiles are merged into the film in tile
+// order, so an image depends only on the seed — not on the thread count or the scheduling.
+// Honours ctx.cancel (tiles not yet started stay black) and reports progress through ctx.progress.
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "core/rng.h"
+#include "render/film.h"
+#include "render/integrator.h"
+
+namespace rc {
+
+struct RenderLoopSettings {
+  int spp = 1;
+  uint64_t seed = 0;
+  int tileSize = 32;
+  std::string phase = "render";  // progress label
+};
+
+struct RenderLoopResult {
+  bool interrupted = false;
+  uint64_t samples = 0;     // samples splatted
+  uint64_t nanSamples = 0;  // non-finite samples dropped
+};
+
+// Per-sample work: radiance along the camera sample at filmPos (pixels, top-left origin) of pixel
+// (px, py). `tile` lets the callback add AOVs for the pixel. Non-finite results are dropped
+// (counted) by the loop, never splatted.
+struct SampleInput {
+  Vec2 filmPos;
+  int px, py, sampleIndex;
+};
+using SampleFn = std::function<Color(const SampleInput& in, Rng& rng, TileFilm& tile)>;
+
+// Per-tile work for integrators that batch (the cache's final gather): the callback renders the
+// whole tile itself, splatting into `tile`; use pixelRng() for the per-sample streams.
+using TileFn = std::function<void(TileFilm& tile)>;
+
+RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
+                               const SampleFn& fn);
+RenderLoopResult renderTiles(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
+                             const TileFn& fn);
+
+// The RNG of sample `sampleIndex` of pixel (px, py) of an image `width` wide.
+inline Rng pixelRng(uint64_t seed, int width, int px, int py, int sampleIndex) {
+  const uint64_t pixel = static_cast<uint64_t>(py) * static_cast<uint64_t>(width) + static_cast<uint64_t>(px);
+  // Everything hashed into the state: PCG streams that differ only in the increment are correlated.
+  return Rng(hashMix(seed, pixel, static_cast<uint64_t>(sampleIndex)), pixel);
+}
+
+}  // namespace rc

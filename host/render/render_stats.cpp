@@ -1,0 +1,29 @@
+// RenderStats (declared in render/integrator.h): insertion-ordered key/value lists; setting an
+// existing key replaces its value in place so the printed order stays stable.
+#include "render/integrator.h"
+
+namespace rc {
+
+namespace {
+template <typename V>
+void upsert(std::vector<std::pair<std::string, V>>& list, const std::string& key, const V& value) {
+  for (auto& kv : list)
+    if (kv.first == key) {
+      kv.second = value;
+      return;
+    }
+  list.emplace_back(key, value);
+}
+}  // namespace
+
+void RenderStats::set(const std::string& key, double value) { upsert(numbers, key, value); }
+void RenderStats::setText(const std::string& key, const std::string& value) { upsert(texts, key, value); }
+void RenderStats::setJson(const std::string& key, const std::string& rawJson) { upsert(json, key, rawJson); }
+
+double RenderStats::get(const std::string& key, double fallback) const {
+  for (const auto& kv : numbers)
+    if (kv.first == key) return kv.second;
+  return fallback;
+}
+
+}  // namespace rc

@@ -1,0 +1,162 @@
+#include "scene/element.h"
+
+#include "scene/transform_parser.h"
+#include "scene/value_parsing.h"
+
+namespace rc {
+
+std::string whereOf(const XmlFile& file, const pugi::xml_node& node) {
+  return file.location(node) + ": " + describeElement(node);
+}
+
+std::string Element::whereParam(const std::string& name) const {
+  int l = props.lineOf(name);
+  if (l <= 0) {
+    auto it = transforms.find(name);
+    if (it != transforms.end()) l = it->second.line;
+  }
+  if (l <= 0) l = line();
+  return atLocation(file->path(), l, describeElement(node));
+}
+
+Mat4 Element::transform(const std::string& name) const {
+  auto it = transforms.find(name);
+  if (it == transforms.end()) return Mat4(1.0f);
+  it->second.used = true;
+  return it->second.matrix;
+}
+
+bool isPropertyTag(const std::string& tag) {
+  return tag == "integer" || tag == "float" || tag == "boolean" || tag == "string" || tag == "rgb" ||
+         tag == "spectrum" || tag == "point" || tag == "vector";
+}
+
+namespace {
+
+// Parses one property element into `p` (and its text form into `raw`).
+void parseProperty(const pugi::xml_node& node, const std::string& tag, Property& p, std::string& raw) {
+  const pugi::xml_attribute value = node.attribute("value");
+  auto allow = [&](std::initializer_list<const char*> names) {
+    for (const pugi::xml_attribute& a : node.attributes()) {
+      bool ok = false;
+      for (const char* n : names) ok = ok || std::string(a.name()) == n;
+      if (!ok) throw Error(std::string("unsupported attribute '") + a.name() + "'");
+    }
+  };
+  auto needValue = [&]() -> std::string {
+    if (!value) throw Error("missing attribute 'value'");
+    return value.value();
+  };
+  if (tag == "point" || tag == "vector") {
+    allow({"name", "value", "x", "y", "z"});
+    p.type = tag == "point" ? Property::Type::Point : Property::Type::Vector;
+    if (value) {
+      if (node.attribute("x") || node.attribute("y") || node.attribute("z"))
+        throw Error("give either 'value' or x/y/z, not both");
+      const std::vector<double> v = parseNumberList(value.value());
+      if (v.size() != 3) throw Error("needs 3 numbers, got " + std::to_string(v.size()));
+      p.vec = Vec3(float(v[0]), float(v[1]), float(v[2]));
+      raw = value.value();
+    } else {
+      auto comp = [&](const char* n) {
+        const pugi::xml_attribute a = node.attribute(n);
+        return a ? float(parseNumber(a.value())) : 0.0f;
+      };
+      p.vec = Vec3(comp("x"), comp("y"), comp("z"));
+      raw = std::to_string(p.vec.x) + ", " + std::to_string(p.vec.y) + ", " + std::to_string(p.vec.z);
+    }
+    return;
+  }
+  allow({"name", "value"});
+  raw = needValue();
+  if (tag == "integer") {
+    p.type = Property::Type::Integer;
+    p.number = double(parseInteger(raw));
+  } else if (tag == "float") {
+    p.type = Property::Type::Float;
+    p.number = parseNumber(raw);
+  } else if (tag == "boolean") {
+    p.type = Property::Type::Boolean;
+    p.boolean = parseBoolean(raw);
+  } else if (tag == "string") {
+    p.type = Property::Type::String;
+    p.text = raw;
+  } else if (tag == "rgb") {
+    p.type = Property::Type::Rgb;
+    const std::vector<double> v = parseNumberList(raw);
+    if (v.size() == 1) p.vec = Vec3(float(v[0]));
+    else if (v.size() == 3) p.vec = Vec3(float(v[0]), float(v[1]), float(v[2]));
+    else throw Error("rgb needs 1 or 3 numbers, got " + std::to_string(v.size()));
+  } else if (tag == "spectrum") {
+    // Only a constant spectrum maps to RGB without a colour-matching step; wavelength:value
+    // lists would need one, so they are rejected rather than approximated.
+    if (raw.find(':') != std::string::npos) throw Error("only constant spectra are supported (one value)");
+    const std::vector<double> v = parseNumberList(raw);
+    if (v.size() != 1) throw Error("only constant spectra are supported (one value)");
+    p.type = Property::Type::Rgb;
+    p.vec = Vec3(float(v[0]));
+  }
+}
+
+}  // namespace
+
+Element parseElement(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
+  Element e;
+  e.file = file;
+  e.node = node;
+  e.tag = node.name();
+  e.type = node.attribute("type").value();
+  e.id = node.attribute("id").value();
+  for (const pugi::xml_attribute& a : node.attributes()) {
+    const std::string n = a.name();
+    if (n != "type" && n != "id" && n != "name") e.fail("unsupported attribute '" + n + "'");
+  }
+  if (node.attribute("id") && e.id.empty()) e.fail("empty 'id'");
+  e.props.pluginType = e.type;
+  e.props.location = file->location(node);
+
+  for (const pugi::xml_node& child : node.children()) {
+    if (child.type() != pugi::node_element) continue;
+    const std::string tag = child.name();
+    const std::string name = child.attribute("name").value();
+    const bool isProp = isPropertyTag(tag);
+    if (isProp || tag == "transform") {
+      if (name.empty()) throw LocatedError(whereOf(*file, child) + ": missing attribute 'name'");
+      if (e.props.has(name) || e.transforms.count(name))
+        throw LocatedError(whereOf(*file, child) + ": parameter '" + name + "' is given more than once");
+    }
+    if (isProp) {
+      Property p;
+      p.line = file->lineOf(child);
+      std::string raw;
+      try {
+        parseProperty(child, tag, p, raw);
+      } catch (const LocatedError&) {
+        throw;
+      } catch (const Error& err) {
+        throw LocatedError(whereOf(*file, child) + ": " + err.what());
+      }
+      e.props.set(name, p);
+      e.raw[name] = raw;
+    } else if (tag == "transform") {
+      for (const pugi::xml_attribute& a : child.attributes())
+        if (std::string(a.name()) != "name")
+          throw LocatedError(whereOf(*file, child) + ": unsupported attribute '" + a.name() + "'");
+      Element::Transform t;
+      t.line = file->lineOf(child);
+      try {
+        t.matrix = parseTransform(child, [&](const pugi::xml_node& n) { return whereOf(*file, n); });
+      } catch (const LocatedError&) {
+        throw;
+      } catch (const Error& err) {
+        throw LocatedError(err.what());  // parseTransform's messages carry their location already
+      }
+      e.transforms[name] = t;
+    } else {
+      e.children.push_back(child);
+    }
+  }
+  return e;
+}
+
+}  // namespace rc

@@ -1,0 +1,73 @@
+#pragma once
+// Internal state of one loadScene() call, shared by the per-plugin builders (bsdf_builder.cpp,
+// shape_builder.cpp, emitter_builder.cpp, sensor_builder.cpp, integrator_builder.cpp).
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "scene/element.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
+#include "scene/xml_file.h"
+
+namespace rc {
+
+class Loader {
+ public:
+  Loader(const LoadOptions& options, std::vector<std::string>* warnings);
+  Scene load(const std::string& path);
+
+  // --- used by the builders ---
+  // Unsupported plugin/parameter: an error, or a warning in lenient mode (then returns normally).
+  void unsupported(const std::string& locatedMessage);
+  // Reports every parameter and transform of `e` that no builder read.
+  void checkUnused(const Element& e);
+  // Unexpected nested element: always an error (a misplaced element is a structural mistake).
+  [[noreturn]] void unexpectedChild(const Element& parent, const pugi::xml_node& child);
+  // Resolves a file name written in `e` relative to its XML file (then the main scene's folder).
+  std::string resolvePath(const Element& e, const std::string& filename) const;
+  std::string anonymousName(const std::string& type);  // "<type>#<n>"
+
+  // Objects with an id, for <ref id> and duplicate detection.
+  enum class Kind { Bsdf, Emitter, Texture, Shape, Other };
+  struct Named {
+    Kind kind = Kind::Other;
+    BsdfPtr bsdf;
+    std::string where;
+  };
+  void registerId(const Element& e, Kind kind, BsdfPtr bsdf = nullptr);
+  const Named& resolveRef(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref);
+
+  BsdfPtr buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
+  BsdfPtr defaultBsdf();
+  int bsdfIndex(const BsdfPtr& bsdf);  // index into scene_.bsdfs, adding it on first use
+  void buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
+  // Top-level emitters (shapeMesh = shapeSphere = -1) and area emitters of a shape.
+  void buildEmitter(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node, int shapeMesh, int shapeSphere);
+  void buildSensor(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
+  void buildIntegrator(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
+
+  const LoadOptions& options() const { return options_; }
+  Scene& scene() { return scene_; }
+
+ private:
+  void processFile(const std::shared_ptr<XmlFile>& file, const std::string& includedFrom);
+  void substituteTree(const std::shared_ptr<XmlFile>& file, pugi::xml_node node, bool topLevel);
+  void sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
+
+  LoadOptions options_;
+  std::vector<std::string>* warnings_;
+  std::map<std::string, std::string> params_;  // -D defines, then <default>s not overridden
+  std::vector<std::string> includeStack_;      // canonical paths of the files being read
+  std::vector<std::shared_ptr<XmlFile>> files_;
+  std::string mainDir_;
+  std::map<std::string, Named> ids_;
+  std::map<const Bsdf*, int> bsdfIndices_;
+  BsdfPtr defaultBsdf_;
+  std::map<std::string, int> anonymousCount_;
+  int sensors_ = 0, integrators_ = 0, environments_ = 0;
+  Scene scene_;
+};
+
+}  // namespace rc

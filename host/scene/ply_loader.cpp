@@ -1,0 +1,249 @@
+#include "scene/ply_loader.h"
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace rc {
+
+namespace {
+
+enum class Scalar { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+
+bool scalarFromName(const std::string& n, Scalar& s) {
+  static const std::pair<const char*, Scalar> table[] = {
+      {"char", Scalar::Int8},     {"int8", Scalar::Int8},      {"uchar", Scalar::UInt8},  {"uint8", Scalar::UInt8},
+      {"short", Scalar::Int16},   {"int16", Scalar::Int16},    {"ushort", Scalar::UInt16}, {"uint16", Scalar::UInt16},
+      {"int", Scalar::Int32},     {"int32", Scalar::Int32},    {"uint", Scalar::UInt32},  {"uint32", Scalar::UInt32},
+      {"float", Scalar::Float32}, {"float32", Scalar::Float32}, {"double", Scalar::Float64}, {"float64", Scalar::Float64}};
+  for (const auto& e : table)
+    if (n == e.first) {
+      s = e.second;
+      return true;
+    }
+  return false;
+}
+
+size_t scalarSize(Scalar s) {
+  switch (s) {
+    case Scalar::Int8: case Scalar::UInt8: return 1;
+    case Scalar::Int16: case Scalar::UInt16: return 2;
+    case Scalar::Int32: case Scalar::UInt32: case Scalar::Float32: return 4;
+    case Scalar::Float64: return 8;
+  }
+  return 0;
+}
+
+bool isIntegral(Scalar s) { return s != Scalar::Float32 && s != Scalar::Float64; }
+
+struct PlyProperty {
+  std::string name;
+  bool isList = false;
+  Scalar countType = Scalar::UInt8, type = Scalar::Float32;
+};
+
+struct PlyElement {
+  std::string name;
+  size_t count = 0;
+  std::vector<PlyProperty> props;
+};
+
+// Reads scalar values from the body, ascii tokens or little-endian binary.
+class BodyReader {
+ public:
+  BodyReader(const std::string& data, size_t pos, bool binary, int firstLine)
+      : data_(data), pos_(pos), binary_(binary), line_(firstLine) {}
+
+  double read(Scalar s) {
+    if (binary_) return readBinary(s);
+    const std::string tok = token();
+    char* end = nullptr;
+    const double v = std::strtod(tok.c_str(), &end);
+    if (end != tok.c_str() + tok.size()) fail("'" + tok + "' is not a number");
+    if (isIntegral(s) && !(std::isfinite(v) && v == std::floor(v))) fail("'" + tok + "' is not an integer");
+    return v;
+  }
+  [[noreturn]] void fail(const std::string& msg) const {
+    throw Error(binary_ ? msg + " (at byte " + std::to_string(pos_) + ")" : "line " + std::to_string(line_) + ": " + msg);
+  }
+  void eof(const std::string& what) const { fail("unexpected end of file while reading " + what + " (the header promises more data)"); }
+  std::string context;  // what is being read, for the end-of-file message
+
+ private:
+  std::string token() {
+    while (pos_ < data_.size() && std::isspace(static_cast<unsigned char>(data_[pos_]))) {
+      if (data_[pos_] == '\n') ++line_;
+      ++pos_;
+    }
+    if (pos_ >= data_.size()) eof(context);
+    const size_t b = pos_;
+    while (pos_ < data_.size() && !std::isspace(static_cast<unsigned char>(data_[pos_]))) ++pos_;
+    return data_.substr(b, pos_ - b);
+  }
+  double readBinary(Scalar s) {
+    const size_t n = scalarSize(s);
+    if (pos_ + n > data_.size()) eof(context);
+    unsigned char b[8];
+    std::memcpy(b, data_.data() + pos_, n);  // the file is little-endian, as is every host we build for
+    pos_ += n;
+    switch (s) {
+      case Scalar::Int8: { int8_t v; std::memcpy(&v, b, 1); return v; }
+      case Scalar::UInt8: return b[0];
+      case Scalar::Int16: { int16_t v; std::memcpy(&v, b, 2); return v; }
+      case Scalar::UInt16: { uint16_t v; std::memcpy(&v, b, 2); return v; }
+      case Scalar::Int32: { int32_t v; std::memcpy(&v, b, 4); return v; }
+      case Scalar::UInt32: { uint32_t v; std::memcpy(&v, b, 4); return v; }
+      case Scalar::Float32: { float v; std::memcpy(&v, b, 4); return v; }
+      case Scalar::Float64: { double v; std::memcpy(&v, b, 8); return v; }
+    }
+    return 0.0;
+  }
+  const std::string& data_;
+  size_t pos_;
+  bool binary_;
+  int line_;
+};
+
+int findProp(const PlyElement& e, std::initializer_list<const char*> names) {
+  for (const char* n : names)
+    for (size_t i = 0; i < e.props.size(); ++i)
+      if (e.props[i].name == n && !e.props[i].isList) return static_cast<int>(i);
+  return -1;
+}
+
+}  // namespace
+
+MeshData loadPly(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot open mesh file '" + path + "'");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  const std::string data = ss.str();
+  auto fail = [&](const std::string& msg) -> Error { return Error(path + ": " + msg); };
+
+  // Header: lines up to "end_header".
+  size_t pos = 0;
+  int lineNo = 0;
+  std::vector<PlyElement> elements;
+  bool binary = false, sawFormat = false, sawEnd = false;
+  while (pos < data.size() && !sawEnd) {
+    size_t eol = data.find('\n', pos);
+    if (eol == std::string::npos) eol = data.size();
+    std::string line = data.substr(pos, eol - pos);
+    pos = eol + 1;
+    ++lineNo;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream ls(line);
+    std::string kw;
+    ls >> kw;
+    const std::string where = path + ":" + std::to_string(lineNo) + ": ";
+    if (lineNo == 1) {
+      if (kw != "ply") throw Error(where + "not a PLY file (first line must be 'ply')");
+      continue;
+    }
+    if (kw.empty() || kw == "comment" || kw == "obj_info") continue;
+    if (kw == "format") {
+      std::string fmt;
+      ls >> fmt;
+      if (fmt == "ascii") binary = false;
+      else if (fmt == "binary_little_endian") binary = true;
+      else throw Error(where + "unsupported PLY format '" + fmt + "' (ascii and binary_little_endian are supported)");
+      sawFormat = true;
+    } else if (kw == "element") {
+      PlyElement e;
+      long long count = -1;
+      if (!(ls >> e.name >> count) || count < 0) throw Error(where + "malformed element line");
+      e.count = static_cast<size_t>(count);
+      elements.push_back(e);
+    } else if (kw == "property") {
+      if (elements.empty()) throw Error(where + "property before any element");
+      PlyProperty p;
+      std::string t;
+      ls >> t;
+      if (t == "list") {
+        std::string ct, it;
+        ls >> ct >> it >> p.name;
+        p.isList = true;
+        if (!scalarFromName(ct, p.countType) || !scalarFromName(it, p.type) || !isIntegral(p.countType))
+          throw Error(where + "malformed list property");
+      } else {
+        if (!scalarFromName(t, p.type)) throw Error(where + "unknown property type '" + t + "'");
+        ls >> p.name;
+      }
+      if (p.name.empty()) throw Error(where + "property without a name");
+      elements.back().props.push_back(p);
+    } else if (kw == "end_header") {
+      sawEnd = true;
+    } else {
+      throw Error(where + "unknown header keyword '" + kw + "'");
+    }
+  }
+  if (!sawEnd) throw fail("header has no 'end_header'");
+  if (!sawFormat) throw fail("header has no 'format' line");
+
+  MeshData mesh;
+  BodyReader body(data, pos, binary, lineNo + 1);
+  bool sawVertex = false;
+  try {
+    for (const PlyElement& e : elements) {
+      body.context = "element '" + e.name + "'";
+      const bool isVertex = e.name == "vertex", isFace = e.name == "face";
+      int ix = -1, iy = -1, iz = -1, inx = -1, iny = -1, inz = -1, iu = -1, iv = -1, ilist = -1;
+      if (isVertex) {
+        sawVertex = true;
+        ix = findProp(e, {"x"}), iy = findProp(e, {"y"}), iz = findProp(e, {"z"});
+        if (ix < 0 || iy < 0 || iz < 0) throw Error("element 'vertex' lacks x, y or z");
+        inx = findProp(e, {"nx"}), iny = findProp(e, {"ny"}), inz = findProp(e, {"nz"});
+        iu = findProp(e, {"u", "s", "texture_u", "texture_s"});
+        iv = findProp(e, {"v", "t", "texture_v", "texture_t"});
+      }
+      if (isFace) {
+        for (size_t i = 0; i < e.props.size(); ++i)
+          if (e.props[i].isList && (e.props[i].name == "vertex_indices" || e.props[i].name == "vertex_index"))
+            ilist = static_cast<int>(i);
+        if (ilist < 0) throw Error("element 'face' lacks a 'vertex_indices' list");
+      }
+      const bool hasN = inx >= 0 && iny >= 0 && inz >= 0, hasUv = iu >= 0 && iv >= 0;
+      std::vector<double> vals(e.props.size());
+      for (size_t k = 0; k < e.count; ++k) {
+        std::vector<uint32_t> face;
+        for (size_t p = 0; p < e.props.size(); ++p) {
+          const PlyProperty& prop = e.props[p];
+          if (!prop.isList) {
+            vals[p] = body.read(prop.type);
+            continue;
+          }
+          const double n = body.read(prop.countType);
+          if (n < 0) body.fail("negative list length");
+          for (size_t j = 0; j < static_cast<size_t>(n); ++j) {
+            const double idx = body.read(prop.type);
+            if (static_cast<int>(p) == ilist) {
+              if (!(idx >= 0 && idx < double(mesh.positions.size())))
+                body.fail("face " + std::to_string(k) + ": vertex index " + std::to_string(static_cast<long long>(idx)) +
+                          " out of range (" + std::to_string(mesh.positions.size()) + " vertices)");
+              face.push_back(static_cast<uint32_t>(idx));
+            }
+          }
+        }
+        if (isVertex) {
+          mesh.positions.emplace_back(float(vals[ix]), float(vals[iy]), float(vals[iz]));
+          if (hasN) mesh.normals.emplace_back(float(vals[inx]), float(vals[iny]), float(vals[inz]));
+          if (hasUv) mesh.uvs.emplace_back(float(vals[iu]), float(vals[iv]));
+        }
+        if (isFace) {
+          if (face.size() < 3) body.fail("face " + std::to_string(k) + " has fewer than 3 vertices");
+          for (size_t j = 1; j + 1 < face.size(); ++j) mesh.triangles.emplace_back(face[0], face[j], face[j + 1]);
+        }
+      }
+    }
+  } catch (const Error& e) {
+    throw fail(e.what());
+  }
+  if (!sawVertex) throw fail("no 'vertex' element");
+  return mesh;
+}
+
+}  // namespace rc

@@ -1,0 +1,16 @@
+#pragma once
+// Stanford PLY reader: ascii and binary_little_endian. Element `vertex` with x y z, optional
+// nx ny nz and uvs (u v | s t | texture_u texture_v | texture_s texture_t), element `face` with a
+// list property vertex_indices (or vertex_index), any count/index scalar types, fan-triangulated.
+// Other elements and properties are read past and ignored (colours etc. are not rendered).
+#include <string>
+
+#include "scene/mesh_data.h"
+
+namespace rc {
+
+// Throws rc::Error("path: what") on unreadable files, malformed headers, a body shorter than the
+// header promises, or face indices out of range.
+MeshData loadPly(const std::string& path);
+
+}  // namespace rc

@@ -1,0 +1,91 @@
+#pragma once
+// The in-memory scene after parsing (DESIGN §8): everything in world space, ready for the BVH.
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "bsdf/bsdf.h"
+#include "core/math.h"
+
+namespace rc {
+
+// A triangle mesh in world space (shapes obj/ply/rectangle/cube/disk are all turned into meshes).
+struct Mesh {
+  std::string name;                    // id or "<type>#<n>", and the source file:line for messages
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;           // per vertex, empty → face normals (flat shading)
+  std::vector<Vec2> uvs;               // per vertex, may be empty
+  std::vector<glm::uvec3> triangles;   // degenerate (zero-area) triangles removed at load
+  int bsdf = -1;                       // index into Scene::bsdfs
+  int emitter = -1;                    // index into Scene::emitters (area emitter), or -1
+  size_t degenerateSkipped = 0;        // zero-area / NaN triangles dropped while loading
+};
+
+// An analytic sphere (shape `sphere`), intersected exactly.
+struct Sphere {
+  std::string name;
+  Vec3 center{0.0f};
+  float radius = 1.0f;
+  bool flipNormals = false;            // normals point inward
+  int bsdf = -1;
+  int emitter = -1;
+};
+
+enum class EmitterType { Area, Point, Directional, Constant, Envmap };
+
+struct Emitter {
+  EmitterType type = EmitterType::Area;
+  Color radiance{1.0f};       // area, constant
+  Color intensity{1.0f};      // point (W/sr)
+  Color irradiance{1.0f};     // directional
+  Vec3 position{0.0f};        // point
+  Vec3 direction{0, 0, 1};    // directional: direction light travels (world, unit)
+  // envmap: lat-long image, Mitsuba convention (Y up in the emitter's local frame)
+  std::string filename;
+  float scale = 1.0f;
+  Mat4 toWorld{1.0f};
+  int envWidth = 0, envHeight = 0;
+  std::vector<Color> envPixels;  // row-major, top row first
+  // area: which shape carries it
+  int mesh = -1, sphere = -1;
+};
+
+struct Camera {
+  Mat4 toWorld{1.0f};          // camera looks down local +z, up is local +y, Mitsuba convention
+  float fovDegrees = 39.3077f; // along fovAxis
+  std::string fovAxis = "x";   // x, y, diagonal, smaller, larger
+  float nearClip = 1e-2f, farClip = 1e4f;
+};
+
+struct FilmSettings {
+  int width = 768, height = 576;
+  std::string filter = "gaussian";  // box | gaussian
+  float gaussianStddev = 0.5f;
+};
+
+// Integrator block; `params` keeps every parameter of <integrator> (and -D overrides are already
+// substituted) so the rcache integrator can read its own (a, rays, order, ...).
+struct IntegratorSettings {
+  std::string type = "path";
+  int maxDepth = -1;      // -1 = unbounded (Russian roulette ends paths)
+  int rrDepth = 5;
+  bool hideEmitters = false;
+  std::map<std::string, std::string> params;  // raw values of all parameters, by name
+};
+
+struct Scene {
+  std::string sourceFile;
+  std::vector<BsdfPtr> bsdfs;
+  std::vector<Mesh> meshes;
+  std::vector<Sphere> spheres;
+  std::vector<Emitter> emitters;
+  Camera camera;
+  FilmSettings film;
+  int sampleCount = 4;
+  uint64_t samplerSeed = 0;
+  IntegratorSettings integrator;
+};
+
+}  // namespace rc

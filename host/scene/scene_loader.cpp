@@ -1,0 +1,191 @@
+// loadScene(): walks the scene file(s) in document order — <default>/$name substitution,
+// <include>, ids and refs — and hands each plugin element to its builder.
+#include "scene/scene_loader.h"
+
+#include <filesystem>
+#include <regex>
+
+#include "scene/loader.h"
+#include "scene/value_parsing.h"
+
+namespace rc {
+
+namespace fs = std::filesystem;
+
+Scene loadScene(const std::string& path, const LoadOptions& options, std::vector<std::string>* warnings) {
+  Loader loader(options, warnings);
+  return loader.load(path);
+}
+
+Loader::Loader(const LoadOptions& options, std::vector<std::string>* warnings)
+    : options_(options), warnings_(warnings), params_(options.defines) {}
+
+Scene Loader::load(const std::string& path) {
+  scene_ = Scene();
+  scene_.sourceFile = path;
+  mainDir_ = fs::path(path).parent_path().string();
+  auto file = XmlFile::load(path);
+  includeStack_ = {fs::weakly_canonical(path).string()};
+  processFile(file, "");
+  if (sensors_ == 0)
+    throw Error(whereOf(*file, file->root()) + ": the scene has no <sensor> (rcache, like Mitsuba 3, needs a camera)");
+  return std::move(scene_);
+}
+
+void Loader::processFile(const std::shared_ptr<XmlFile>& file, const std::string& includedFrom) {
+  files_.push_back(file);
+  const pugi::xml_node root = file->root();
+  const std::string prefix = includedFrom.empty() ? "" : " (included from " + includedFrom + ")";
+  if (std::string(root.name()) != "scene")
+    throw Error(whereOf(*file, root) + ": the root element must be <scene>" + prefix);
+  const pugi::xml_attribute version = root.attribute("version");
+  if (!version) throw Error(whereOf(*file, root) + ": missing attribute 'version' (e.g. version=\"3.0.0\")");
+  static const std::regex versionFormat(R"((\d+)\.(\d+)\.(\d+))");
+  std::smatch m;
+  const std::string v = version.value();
+  if (!std::regex_match(v, m, versionFormat))
+    throw Error(whereOf(*file, root) + ": malformed version '" + v + "' (expected major.minor.patch)");
+  // Version 0.x/1.x files use Mitsuba 0.6 parameter names that Mitsuba 3 upgrades on load; we do not.
+  if (std::stoi(m[1]) < 2)
+    throw Error(whereOf(*file, root) + ": scene version " + v + " (Mitsuba 0.6 syntax) is not supported; use 3.0.0");
+  for (const pugi::xml_attribute& a : root.attributes())
+    if (std::string(a.name()) != "version")
+      throw Error(whereOf(*file, root) + ": unsupported attribute '" + a.name() + "'");
+
+  // Substitution runs in document order so a <default> applies to what follows it, as in Mitsuba.
+  for (pugi::xml_node child : root.children()) substituteTree(file, child, true);
+  for (const pugi::xml_node& child : root.children())
+    if (child.type() == pugi::node_element) sceneChild(file, child);
+}
+
+void Loader::substituteTree(const std::shared_ptr<XmlFile>& file, pugi::xml_node node, bool topLevel) {
+  if (node.type() != pugi::node_element) return;
+  for (pugi::xml_attribute a : node.attributes()) {
+    try {
+      const std::string s = substituteParams(a.value(), params_);
+      if (s != a.value()) a.set_value(s.c_str());
+    } catch (const Error& e) {
+      throw LocatedError(whereOf(*file, node) + ": attribute '" + a.name() + "': " + e.what());
+    }
+  }
+  if (std::string(node.name()) == "default") {
+    if (!topLevel) throw LocatedError(whereOf(*file, node) + ": <default> must be a direct child of <scene>");
+    const pugi::xml_attribute name = node.attribute("name"), value = node.attribute("value");
+    if (!name || !value || std::string(name.value()).empty())
+      throw LocatedError(whereOf(*file, node) + ": <default> needs 'name' and 'value'");
+    for (const pugi::xml_attribute& a : node.attributes())
+      if (std::string(a.name()) != "name" && std::string(a.name()) != "value")
+        throw LocatedError(whereOf(*file, node) + ": unsupported attribute '" + a.name() + "'");
+    params_.emplace(name.value(), value.value());  // a -D define (already present) wins
+  }
+  for (pugi::xml_node child : node.children()) substituteTree(file, child, false);
+}
+
+void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
+  const std::string tag = node.name();
+  if (tag == "default") return;  // handled during substitution
+  if (tag == "include") {
+    const pugi::xml_attribute fn = node.attribute("filename");
+    if (!fn) throw LocatedError(whereOf(*file, node) + ": missing attribute 'filename'");
+    for (const pugi::xml_attribute& a : node.attributes())
+      if (std::string(a.name()) != "filename")
+        throw LocatedError(whereOf(*file, node) + ": unsupported attribute '" + a.name() + "'");
+    fs::path target = fn.value();
+    if (target.is_relative()) target = fs::path(file->path()).parent_path() / target;
+    target = target.lexically_normal();
+    const std::string at = whereOf(*file, node);
+    if (!fs::is_regular_file(target)) throw LocatedError(at + ": included file '" + target.string() + "' not found");
+    const std::string canonical = fs::weakly_canonical(target).string();
+    for (const std::string& s : includeStack_)
+      if (s == canonical) throw LocatedError(at + ": include cycle: '" + target.string() + "' is already being read");
+    includeStack_.push_back(canonical);
+    std::shared_ptr<XmlFile> inc;
+    try {
+      inc = XmlFile::load(target.string(), at);
+    } catch (const LocatedError&) {
+      throw;
+    } catch (const Error& e) {
+      throw LocatedError(e.what());  // XmlFile::load messages carry the included file's location
+    }
+    processFile(inc, file->location(node));
+    includeStack_.pop_back();
+    return;
+  }
+  if (tag == "bsdf") {
+    buildBsdf(file, node);  // registers its id; unreferenced BSDFs never reach Scene::bsdfs
+  } else if (tag == "shape") {
+    buildShape(file, node);
+  } else if (tag == "emitter") {
+    buildEmitter(file, node, -1, -1);
+  } else if (tag == "sensor") {
+    buildSensor(file, node);
+  } else if (tag == "integrator") {
+    buildIntegrator(file, node);
+  } else if (tag == "texture") {
+    // BSDF parameters are constants here (no texture lookups), so no texture plugin exists.
+    Element e = parseElement(file, node);
+    unsupported(e.where() + ": unknown plugin '" + e.type + "' (textures are not supported)");
+    if (!e.id.empty()) registerId(e, Kind::Texture);
+  } else if (tag == "film" || tag == "sampler" || tag == "rfilter") {
+    throw LocatedError(whereOf(*file, node) + ": <" + tag + "> must be inside " +
+                       (tag == "rfilter" ? "<film>" : "<sensor>"));
+  } else if (isPropertyTag(tag) || tag == "transform" || tag == "ref") {
+    throw LocatedError(whereOf(*file, node) + ": <" + tag + "> is not allowed directly inside <scene>");
+  } else {
+    unsupported(whereOf(*file, node) + ": unknown element <" + tag + ">");
+  }
+}
+
+void Loader::unsupported(const std::string& locatedMessage) {
+  if (!options_.lenient) throw LocatedError(locatedMessage);
+  if (warnings_) warnings_->push_back(locatedMessage);
+}
+
+void Loader::checkUnused(const Element& e) {
+  for (const std::string& name : e.props.unusedNames()) unsupported(e.whereParam(name) + ": unsupported parameter '" + name + "'");
+  for (const auto& kv : e.transforms)
+    if (!kv.second.used) unsupported(e.whereParam(kv.first) + ": unsupported parameter '" + kv.first + "'");
+}
+
+void Loader::unexpectedChild(const Element& parent, const pugi::xml_node& child) {
+  throw LocatedError(whereOf(*parent.file, child) + ": unexpected <" + child.name() + "> inside <" + parent.tag + ">");
+}
+
+std::string Loader::resolvePath(const Element& e, const std::string& filename) const {
+  const fs::path p(filename);
+  if (p.is_absolute()) return p.string();
+  const fs::path local = (fs::path(e.file->path()).parent_path() / p).lexically_normal();
+  if (fs::exists(local)) return local.string();
+  // Mitsuba resolves against the main scene's folder; accept that too for included files.
+  const fs::path main = (fs::path(mainDir_) / p).lexically_normal();
+  if (fs::exists(main)) return main.string();
+  return local.string();  // the caller reports it missing under the name users expect
+}
+
+std::string Loader::anonymousName(const std::string& type) {
+  return type + "#" + std::to_string(anonymousCount_[type]++);
+}
+
+void Loader::registerId(const Element& e, Kind kind, BsdfPtr bsdf) {
+  if (e.id.empty()) return;
+  auto it = ids_.find(e.id);
+  if (it != ids_.end()) e.fail("duplicate id '" + e.id + "' (first defined at " + it->second.where + ")");
+  Named n;
+  n.kind = kind;
+  n.bsdf = std::move(bsdf);
+  n.where = e.file->location(e.node);
+  ids_[e.id] = n;
+}
+
+const Loader::Named& Loader::resolveRef(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref) {
+  for (const pugi::xml_attribute& a : ref.attributes())
+    if (std::string(a.name()) != "id" && std::string(a.name()) != "name")
+      throw LocatedError(whereOf(*file, ref) + ": unsupported attribute '" + a.name() + "'");
+  const std::string id = ref.attribute("id").value();
+  if (id.empty()) throw LocatedError(whereOf(*file, ref) + ": missing attribute 'id'");
+  auto it = ids_.find(id);
+  if (it == ids_.end()) throw LocatedError(whereOf(*file, ref) + ": reference to unknown id '" + id + "' (define it before use)");
+  return it->second;
+}
+
+}  // namespace rc

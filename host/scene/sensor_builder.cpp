@@ -1,0 +1,102 @@
+// <sensor type="perspective"> with its <film type="hdrfilm"> (and <rfilter>) and <sampler type="independent">.
+#include <cmath>
+
+#include "scene/loader.h"
+
+namespace rc {
+
+namespace {
+
+void buildRfilter(Loader& loader, const Element& e, FilmSettings& film) {
+  for (const pugi::xml_node& child : e.children) loader.unexpectedChild(e, child);
+  if (e.type == "box") {
+    film.filter = "box";
+  } else if (e.type == "gaussian") {
+    film.filter = "gaussian";
+    film.gaussianStddev = e.located([&] { return e.props.getFloat("stddev", 0.5f); });
+    if (!(film.gaussianStddev > 0.0f)) e.failParam("stddev", "'stddev' must be positive");
+  } else {
+    loader.unsupported(e.where() + ": unknown plugin '" + e.type + "'");
+    return;
+  }
+  loader.checkUnused(e);
+}
+
+void buildFilm(Loader& loader, const Element& e, FilmSettings& film) {
+  if (e.type != "hdrfilm") {
+    loader.unsupported(e.where() + ": unknown plugin '" + e.type + "'");
+    return;
+  }
+  film.width = e.located([&] { return e.props.getInt("width", 768); });
+  film.height = e.located([&] { return e.props.getInt("height", 576); });
+  // Limits: a side over 16384 or more than 2^26 pixels (a 8192² image) is a typo, not a render.
+  const long long pixels = static_cast<long long>(film.width) * film.height;
+  if (film.width <= 0 || film.width > 16384) e.failParam("width", "'width' must be in 1..16384, got " + std::to_string(film.width));
+  if (film.height <= 0 || film.height > 16384) e.failParam("height", "'height' must be in 1..16384, got " + std::to_string(film.height));
+  if (pixels > (1ll << 26)) e.fail("film of " + std::to_string(pixels) + " pixels exceeds the limit of 2^26");
+  // Output format is decided by the -o file; accept Mitsuba's format strings so scenes stay portable.
+  e.located([&] { return e.props.getString("pixel_format", "rgb"); });
+  e.located([&] { return e.props.getString("component_format", "float16"); });
+  for (const pugi::xml_node& child : e.children) {
+    if (std::string(child.name()) != "rfilter") loader.unexpectedChild(e, child);
+    buildRfilter(loader, parseElement(e.file, child), film);
+  }
+  loader.checkUnused(e);
+}
+
+void buildSampler(Loader& loader, const Element& e, Scene& scene) {
+  for (const pugi::xml_node& child : e.children) loader.unexpectedChild(e, child);
+  if (e.type != "independent") {
+    loader.unsupported(e.where() + ": unknown plugin '" + e.type + "'");
+    return;
+  }
+  const int count = e.located([&] { return e.props.getInt("sample_count", 4); });
+  if (count <= 0) e.failParam("sample_count", "'sample_count' must be positive, got " + std::to_string(count));
+  const int seed = e.located([&] { return e.props.getInt("seed", 0); });
+  if (seed < 0) e.failParam("seed", "'seed' must be non-negative");
+  scene.sampleCount = count;
+  scene.samplerSeed = static_cast<uint64_t>(seed);
+  loader.checkUnused(e);
+}
+
+}  // namespace
+
+void Loader::buildSensor(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
+  const Element e = parseElement(file, node);
+  if (e.type.empty()) e.fail("missing attribute 'type'");
+  if (e.type != "perspective") {
+    unsupported(e.where() + ": unknown plugin '" + e.type + "'");
+    return;
+  }
+  if (sensors_++ > 0) {
+    unsupported(e.where() + ": only one sensor is supported (the first one is used)");
+    return;
+  }
+  Camera& cam = scene_.camera;
+  cam.fovDegrees = e.located([&] { return e.props.getFloat("fov", 39.3077f); });
+  if (!(cam.fovDegrees > 0.0f && cam.fovDegrees < 180.0f))
+    e.failParam("fov", "'fov' must be in (0, 180) degrees, got " + std::to_string(cam.fovDegrees));
+  cam.fovAxis = e.located([&] { return e.props.getString("fov_axis", "x"); });
+  if (cam.fovAxis != "x" && cam.fovAxis != "y" && cam.fovAxis != "diagonal" && cam.fovAxis != "smaller" &&
+      cam.fovAxis != "larger")
+    e.failParam("fov_axis", "'fov_axis' must be x, y, diagonal, smaller or larger, got '" + cam.fovAxis + "'");
+  cam.nearClip = e.located([&] { return e.props.getFloat("near_clip", 1e-2f); });
+  cam.farClip = e.located([&] { return e.props.getFloat("far_clip", 1e4f); });
+  if (!(cam.nearClip > 0.0f)) e.failParam("near_clip", "'near_clip' must be positive");
+  if (!(cam.farClip > cam.nearClip)) e.failParam("far_clip", "'far_clip' must exceed 'near_clip'");
+  cam.toWorld = e.transform("to_world");
+  // As Mitsuba 3: the camera frame must be orthonormal up to a mirror; a scale would distort
+  // the ray directions. Tolerance 1e-3 on squared column lengths, Mitsuba's has_scale() test.
+  for (int c = 0; c < 3; ++c)
+    if (std::fabs(glm::dot(Vec3(cam.toWorld[c]), Vec3(cam.toWorld[c])) - 1.0f) > 1e-3f)
+      e.failParam("to_world", "the camera's to_world must not scale");
+  for (const pugi::xml_node& child : e.children) {
+    const std::string tag = child.name();
+    if (tag == "film") buildFilm(*this, parseElement(file, child), scene_.film);
+    else if (tag == "sampler") buildSampler(*this, parseElement(file, child), scene_);
+    else unexpectedChild(e, child);
+  }
+  checkUnused(e);
+}
+
+}  // namespace rc

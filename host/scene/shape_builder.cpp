@@ -1,0 +1,127 @@
+// <shape>: obj, ply, rectangle, cube, disk as world-space meshes; sphere as an analytic Sphere.
+#include <cmath>
+
+#include "scene/loader.h"
+#include "scene/mesh_builder.h"
+#include "scene/obj_loader.h"
+#include "scene/ply_loader.h"
+
+namespace rc {
+
+namespace {
+
+// A sphere stays a sphere only under similarity transforms: the linear part must be a rotation
+// times a uniform scale and the projective row must be (0 0 0 1). Tolerance 1e-4 relative: far
+// above float rounding of composed rotate/scale ops (~1e-6), far below any intended anisotropy.
+bool similarity(const Mat4& m, float& scale) {
+  if (m[0][3] != 0.0f || m[1][3] != 0.0f || m[2][3] != 0.0f || m[3][3] != 1.0f) return false;
+  const Vec3 c[3] = {Vec3(m[0]), Vec3(m[1]), Vec3(m[2])};
+  const float s = glm::length(c[0]);
+  if (!(s > 0.0f)) return false;
+  for (int i = 0; i < 3; ++i) {
+    if (std::fabs(glm::length(c[i]) - s) > 1e-4f * s) return false;
+    for (int j = i + 1; j < 3; ++j)
+      if (std::fabs(glm::dot(c[i], c[j])) > 1e-4f * s * s) return false;
+  }
+  scale = s;
+  return true;
+}
+
+}  // namespace
+
+void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
+  const Element e = parseElement(file, node);
+  static const char* kTypes[] = {"obj", "ply", "rectangle", "cube", "disk", "sphere"};
+  bool known = false;
+  for (const char* t : kTypes) known = known || e.type == t;
+  if (e.type.empty()) e.fail("missing attribute 'type'");
+  if (!known) {
+    unsupported(e.where() + ": unknown plugin '" + e.type + "'");
+    return;  // lenient: the shape is left out
+  }
+
+  // Nested material and emitter (the emitter is built once the shape has its index).
+  BsdfPtr bsdf;
+  pugi::xml_node emitterNode;
+  for (const pugi::xml_node& child : e.children) {
+    const std::string tag = child.name();
+    if (tag == "bsdf" || tag == "ref") {
+      if (bsdf) throw LocatedError(whereOf(*file, child) + ": a shape takes one bsdf, this is the second");
+      if (tag == "bsdf") {
+        bsdf = buildBsdf(file, child);
+      } else {
+        const Named& n = resolveRef(file, child);
+        if (n.kind != Kind::Bsdf || !n.bsdf)
+          throw LocatedError(whereOf(*file, child) + ": id '" + std::string(child.attribute("id").value()) +
+                             "' (defined at " + n.where + ") is not a bsdf");
+        bsdf = n.bsdf;
+      }
+    } else if (tag == "emitter") {
+      if (emitterNode) throw LocatedError(whereOf(*file, child) + ": a shape takes one emitter, this is the second");
+      emitterNode = child;
+    } else {
+      unexpectedChild(e, child);
+    }
+  }
+  if (!bsdf) bsdf = defaultBsdf();
+  const int material = bsdfIndex(bsdf);
+  const std::string name = (e.id.empty() ? anonymousName(e.type) : e.id) + " (" + file->location(node) + ")";
+
+  const bool flip = e.located([&] { return e.props.getBool("flip_normals", false); });
+  const Mat4 toWorld = e.transform("to_world");
+  int meshIndex = -1, sphereIndex = -1;
+
+  if (e.type == "sphere") {
+    Sphere s;
+    s.name = name;
+    const Vec3 center = e.located([&] { return e.props.getVector("center", Vec3(0.0f)); });
+    const float radius = e.located([&] { return e.props.getFloat("radius", 1.0f); });
+    if (!(radius > 0.0f)) e.failParam("radius", "radius must be positive, got " + std::to_string(radius));
+    float scale = 1.0f;
+    if (!similarity(toWorld, scale))
+      e.failParam("to_world", "a sphere's to_world may only rotate, translate and scale uniformly "
+                              "(use an obj/ply mesh for an ellipsoid)");
+    s.center = Vec3(toWorld * Vec4(center, 1.0f));
+    s.radius = radius * scale;
+    s.flipNormals = flip;
+    s.bsdf = material;
+    sphereIndex = static_cast<int>(scene_.spheres.size());
+    scene_.spheres.push_back(s);
+  } else {
+    MeshData data;
+    MeshPolicy policy;
+    policy.flipNormals = flip;
+    if (e.type == "obj" || e.type == "ply" || e.type == "cube")
+      policy.faceNormals = e.located([&] { return e.props.getBool("face_normals", false); });
+    if (e.type == "obj" || e.type == "ply") {
+      const std::string fn = e.located([&] { return e.props.getString("filename", ""); });
+      if (fn.empty()) e.fail("missing parameter 'filename'");
+      const std::string path = resolvePath(e, fn);
+      if (e.type == "obj") {
+        const bool flipUv = e.located([&] { return e.props.getBool("flip_tex_coords", true); });
+        data = e.located([&] { return loadObj(path, flipUv); });
+      } else {
+        data = e.located([&] { return loadPly(path); });
+      }
+    } else if (e.type == "rectangle") {
+      data = makeRectangle();
+    } else if (e.type == "cube") {
+      data = makeCube();
+    } else {
+      data = makeDisk(128);
+    }
+    Mesh mesh = buildMesh(std::move(data), toWorld, policy);
+    if (mesh.triangles.empty())
+      unsupported(e.where() + ": the mesh has no valid triangles (" + std::to_string(mesh.degenerateSkipped) +
+                  " degenerate ones dropped)");
+    mesh.name = name;
+    mesh.bsdf = material;
+    meshIndex = static_cast<int>(scene_.meshes.size());
+    scene_.meshes.push_back(std::move(mesh));
+  }
+  checkUnused(e);
+  registerId(e, Kind::Shape);
+  if (emitterNode) buildEmitter(file, emitterNode, meshIndex, sphereIndex);
+}
+
+}  // namespace rc

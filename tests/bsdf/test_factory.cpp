@@ -1,0 +1,157 @@
+// Factory table: known types, nesting rules, parameter validation messages and parameter keys.
+#include <gtest/gtest.h>
+
+#include "bsdf/bsdf_factory.h"
+#include "core/error.h"
+
+namespace rc {
+namespace {
+
+Property num(double v) {
+  Property p;
+  p.type = Property::Type::Float;
+  p.number = v;
+  return p;
+}
+Property str(const std::string& s) {
+  Property p;
+  p.type = Property::Type::String;
+  p.text = s;
+  return p;
+}
+
+Properties props(const std::string& type) {
+  Properties p;
+  p.pluginType = type;
+  return p;
+}
+
+// Expects createBsdf to throw rc::Error whose message mentions `needle`.
+void expectError(const Properties& p, const std::vector<BsdfPtr>& nested, const std::string& needle) {
+  try {
+    createBsdf(p, nested);
+    FAIL() << "no error for " << p.pluginType << ", expected '" << needle << "'";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+  }
+}
+
+TEST(BsdfFactory, KnownTypes) {
+  for (const char* t : {"diffuse", "roughconductor", "conductor", "plastic", "roughplastic", "dielectric", "twosided",
+                        "blendbsdf"})
+    EXPECT_TRUE(isKnownBsdfType(t)) << t;
+  EXPECT_FALSE(isKnownBsdfType("roughdielectric"));
+  expectError(props("nosuch"), {}, "unknown BSDF plugin 'nosuch'");
+}
+
+TEST(BsdfFactory, DefaultsAndIds) {
+  BsdfPtr d = createBsdf(props("diffuse"), {});
+  EXPECT_EQ(d->typeName(), "diffuse");
+  EXPECT_EQ(d->id.rfind("diffuse#", 0), 0u);
+  EXPECT_TRUE(d->isDiffuseOnly());
+  EXPECT_EQ(createBsdf(props("diffuse"), {}, "wall")->id, "wall");
+  BsdfPtr r = createBsdf(props("roughconductor"), {});
+  EXPECT_FLOAT_EQ(r->glossyAlpha(), 0.1f);  // Mitsuba default alpha
+  EXPECT_NE(r->parameterKey().find("beckmann"), std::string::npos);  // Mitsuba default distribution
+}
+
+TEST(BsdfFactory, RejectsBadParameters) {
+  Properties p = props("roughconductor");
+  p.set("alpha", num(0.0));
+  expectError(p, {}, "'alpha'");
+  p = props("roughconductor");
+  p.set("alpha", num(NAN));
+  expectError(p, {}, "'alpha'");
+  p = props("roughconductor");
+  p.set("alpha_u", num(0.1));
+  expectError(p, {}, "alpha_v");
+  p = props("diffuse");
+  p.set("reflectance", num(-0.1));
+  expectError(p, {}, "'reflectance'");
+  p = props("conductor");
+  p.set("eta", num(NAN));
+  expectError(p, {}, "'eta'");
+  p = props("conductor");
+  p.set("material", str("Au"));
+  expectError(p, {}, "unsupported material");
+  p = props("roughconductor");
+  p.set("distribution", str("phong"));
+  expectError(p, {}, "'distribution'");
+  BsdfPtr d = createBsdf(props("diffuse"), {});
+  p = props("blendbsdf");
+  p.set("weight", num(1.5));
+  expectError(p, {d, d}, "'weight'");
+  expectError(props("blendbsdf"), {d}, "nested");
+  expectError(props("twosided"), {}, "nested");
+  expectError(props("diffuse"), {d}, "nested");
+}
+
+TEST(BsdfFactory, ParameterKeyDistinguishesValues) {
+  Properties a = props("roughconductor"), b = props("roughconductor");
+  a.set("alpha", num(0.3));
+  b.set("alpha", num(std::nextafter(0.3f, 1.0f)));
+  EXPECT_NE(createBsdf(a, {})->parameterKey(), createBsdf(b, {})->parameterKey());
+  Properties a2 = props("roughconductor");
+  a2.set("alpha", num(0.3));
+  EXPECT_EQ(createBsdf(a, {})->parameterKey(), createBsdf(a2, {})->parameterKey());
+  BsdfPtr d1 = createBsdf(props("diffuse"), {});
+  Properties g = props("diffuse");
+  g.set("reflectance", num(0.25));
+  BsdfPtr d2 = createBsdf(g, {});
+  // Nested keys are part of the wrapper's key.
+  EXPECT_NE(createBsdf(props("twosided"), {d1})->parameterKey(), createBsdf(props("twosided"), {d2})->parameterKey());
+  Properties unread = props("diffuse");
+  unread.set("bogus", num(1.0));
+  createBsdf(unread, {});
+  ASSERT_EQ(unread.unusedNames().size(), 1u);  // the parser reports it
+}
+
+TEST(BsdfFactory, NamedIorsAsMitsuba) {
+  // "bk7" (1.5046) in "water" (1.333) equals the numeric ratio; names are case-insensitive.
+  Properties named = props("dielectric"), numeric = props("dielectric");
+  named.set("int_ior", str("BK7"));
+  named.set("ext_ior", str("water"));
+  numeric.set("int_ior", num(1.5046));
+  numeric.set("ext_ior", num(1.333));
+  EXPECT_EQ(createBsdf(named, {})->parameterKey(), createBsdf(numeric, {})->parameterKey());
+  // Defaults: dielectric bk7/air, plastic polypropylene (1.49)/air.
+  Properties dflt = props("dielectric"), explicitIor = props("dielectric");
+  explicitIor.set("int_ior", str("bk7"));
+  explicitIor.set("ext_ior", str("air"));
+  EXPECT_EQ(createBsdf(dflt, {})->parameterKey(), createBsdf(explicitIor, {})->parameterKey());
+  Properties plasticDefault = props("plastic"), acrylic = props("plastic");
+  acrylic.set("int_ior", str("acrylic glass"));  // 1.49 too
+  EXPECT_EQ(createBsdf(plasticDefault, {})->parameterKey(), createBsdf(acrylic, {})->parameterKey());
+  Properties bad = props("plastic");
+  bad.set("int_ior", str("unobtainium"));
+  expectError(bad, {}, "unknown index-of-refraction name 'unobtainium'");
+  bad = props("dielectric");
+  bad.set("ext_ior", num(-1.0));
+  expectError(bad, {}, "'ext_ior'");
+}
+
+TEST(BsdfFactory, LobesAlphaAndIsotropy) {
+  EXPECT_EQ(createBsdf(props("plastic"), {})->lobes(), uint32_t(kLobeDiffuse | kLobeDelta));
+  EXPECT_EQ(createBsdf(props("dielectric"), {})->lobes(), uint32_t(kLobeDelta | kLobeTransmission));
+  EXPECT_TRUE(std::isinf(createBsdf(props("conductor"), {})->glossyAlpha()));
+  Properties aniso = props("roughconductor");
+  aniso.set("alpha_u", num(0.3));
+  aniso.set("alpha_v", num(0.2));
+  BsdfPtr a = createBsdf(aniso, {});
+  EXPECT_FALSE(a->isotropic());
+  EXPECT_FLOAT_EQ(a->glossyAlpha(), 0.2f);
+  BsdfPtr d = createBsdf(props("diffuse"), {});
+  Properties blend = props("blendbsdf");
+  blend.set("weight", num(0.0));  // second BSDF has no weight: its lobe is absent
+  BsdfPtr b = createBsdf(blend, {d, a});
+  EXPECT_TRUE(b->isDiffuseOnly());
+  EXPECT_FALSE(createBsdf(props("twosided"), {d, a})->isotropic());
+  // roughplastic is isotropic only, like Mitsuba: alpha_u stays unread and the parser reports it.
+  Properties rp = props("roughplastic");
+  rp.set("alpha_u", num(0.3));
+  createBsdf(rp, {});
+  EXPECT_EQ(rp.unusedNames(), std::vector<std::string>{"alpha_u"});
+}
+
+}  // namespace
+}  // namespace rc

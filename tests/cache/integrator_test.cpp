@@ -1,0 +1,122 @@
+// The rcache integrator end to end on tiny programmatic scenes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <unistd.h>
+
+#include "core/error.h"
+#include "core/image_metrics.h"
+#include "test_scene.h"
+
+namespace rc {
+namespace {
+
+double maxRelDiff(const std::vector<Color>& a, const std::vector<Color>& b) {
+  double m = 0;
+  for (size_t i = 0; i < a.size(); ++i)
+    for (int c = 0; c < 3; ++c) m = std::max(m, std::fabs(double(a[i][c]) - b[i][c]) / (std::fabs(double(b[i][c])) + 1e-2));
+  return m;
+}
+
+TEST(RcacheIntegrator, RecordAndWorldFrameInterpolationGiveTheSameImage) {
+  // Glossy floor radiance-cached at order 8 (forced), so rotations of real SH vectors matter.
+  const Scene s = test::boxScene(0.3f);
+  const std::map<std::string, std::string> base = {{"order", "8"}, {"adaptive", "false"}};
+  auto world = base, record = base;
+  world["frame"] = "world";
+  record["frame"] = "record";
+  auto a = test::renderScene(s, test::rcacheSettings(s, world), 2);
+  auto b = test::renderScene(s, test::rcacheSettings(s, record), 2);
+  ASSERT_GT(a.stats.get("records_glossy"), 0.0);
+  EXPECT_EQ(a.stats.get("records"), b.stats.get("records"));
+  // Both sums are the same linear map applied in a different order: float rounding of an
+  // order-8 rotation (~64 terms per coefficient, |x| ≲ 1) stays below 1e-5 relative; 1e-4 leaves
+  // margin for the BRDF dot product's own rounding.
+  const double d = maxRelDiff(a.image.pixels, b.image.pixels);
+  std::printf("world vs record frame: max relative difference %.3g\n", d);
+  EXPECT_LT(d, 1e-4);
+}
+
+TEST(RcacheIntegrator, DiffuseOnlySceneMakesNoGlossyRecordsOrTables) {
+  const Scene s = test::boxScene(0.0f);
+  auto r = test::renderScene(s, test::rcacheSettings(s), 1);
+  EXPECT_GT(r.stats.get("records"), 0.0);
+  EXPECT_EQ(r.stats.get("records_glossy"), 0.0);
+  // Only order-3 clamped-cosine tables (irradiance cache), no radiance-cache material.
+  std::string materials, skipped;
+  for (auto& [k, v] : r.stats.json)
+    if (k == "materials") materials = v;
+  for (auto& [k, v] : r.stats.texts)
+    if (k == "skipped") skipped = v;
+  EXPECT_EQ(materials.find("\"technique\": \"radiance cache\""), std::string::npos) << materials;
+  EXPECT_NE(skipped.find("no glossy material"), std::string::npos) << skipped;
+}
+
+TEST(RcacheIntegrator, CacheSaveThenLoadGivesTheIdenticalImage) {
+  const Scene s = test::boxScene(0.4f);
+  const std::string path = ::testing::TempDir() + "rcache_test_" + std::to_string(getpid()) + ".rcc";
+  auto a = test::renderScene(s, test::rcacheSettings(s, {{"order", "6"}}), 2, 0, path, "");
+  auto b = test::renderScene(s, test::rcacheSettings(s, {{"order", "6"}}), 2, 0, "", path);
+  EXPECT_EQ(b.stats.get("records_loaded"), a.stats.get("records"));
+  EXPECT_EQ(b.stats.get("records"), a.stats.get("records"));  // nothing new: all covered
+  std::printf("A: %g records, reshaded %g bands; B: loaded %g\n", a.stats.get("records"), a.stats.get("bands_reshaded"), b.stats.get("records_loaded"));
+  ASSERT_EQ(a.image.pixels.size(), b.image.pixels.size());
+  for (size_t i = 0; i < a.image.pixels.size(); ++i) ASSERT_EQ(a.image.pixels[i], b.image.pixels[i]) << "pixel " << i;
+  // Another scene (different light) must be refused with a precise message.
+  Scene other = s;
+  other.emitters[0].radiance = Color(3.0f);
+  try {
+    test::renderScene(other, test::rcacheSettings(other, {{"order", "6"}}), 1, 0, "", path);
+    FAIL() << "a cache of another scene was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("another scene"), std::string::npos) << e.what();
+  }
+  std::remove(path.c_str());
+}
+
+TEST(RcacheIntegrator, AdaptiveCachingRefinesSharperFloorsMore) {
+  // Same geometry, same a; only the floor's roughness differs. Geometry-only placement (adaptive
+  // off) would give nearly the same count; adaptive caching adds records where the sharper lobe
+  // makes neighbouring records disagree (Křivánek et al. 2006, glossy-floor figure).
+  Scene sharp = test::boxScene(0.12f, 48, 36), rough = test::boxScene(0.6f, 48, 36);
+  const std::map<std::string, std::string> p = {{"order", "10"}};
+  auto rs = test::renderScene(sharp, test::rcacheSettings(sharp, p), 1);
+  auto rr = test::renderScene(rough, test::rcacheSettings(rough, p), 1);
+  const double gs = rs.stats.get("records_glossy"), gr = rr.stats.get("records_glossy");
+  std::printf("glossy records: sharp %.0f (shrinks %.0f), rough %.0f (shrinks %.0f)\n", gs,
+              rs.stats.get("adaptive_shrinks"), gr, rr.stats.get("adaptive_shrinks"));
+  EXPECT_GT(gs, 1.2 * gr);
+}
+
+TEST(RcacheIntegrator, RejectsUnknownParameter) {
+  const Scene s = test::boxScene(0.0f);
+  EXPECT_THROW(makeRcacheIntegrator(test::rcacheSettings(s, {{"bogus", "1"}})), Error);
+  EXPECT_THROW(makeRcacheIntegrator(test::rcacheSettings(s, {{"a", "-1"}})), Error);
+}
+
+TEST(RcacheIntegrator, TabellionLamorletteEqualsRadianceCacheOnDiffuse) {
+  // On a Lambertian surface f·E (dominant direction) and Λ·F_cos (order 3) are the same number,
+  // up to the clamped-cosine table's quadrature (brdf: 1e-3 relative) — a check of both paths.
+  const Scene s = test::boxScene(0.0f);
+  auto a = test::renderScene(s, test::rcacheSettings(s, {{"mode", "tl"}, {"adaptive", "false"}}), 1);
+  auto b = test::renderScene(s, test::rcacheSettings(s, {{"adaptive", "false"}}), 1);
+  const ImageError e = compareImages(a.image.pixels, b.image.pixels);
+  std::printf("tl vs radiance on diffuse: rmse %.3g relmse %.3g\n", e.rmse, e.relmse);
+  EXPECT_LT(e.relmse, 1e-4);
+}
+
+TEST(RcacheIntegrator, AovsAreWritten) {
+  const Scene s = test::boxScene(0.4f);
+  auto r = test::renderScene(s, test::rcacheSettings(s, {{"order", "6"}}), 1, 0, "", "",
+                             {"records", "radius", "technique", "contributors"});
+  for (const char* name : {"records", "radius", "technique", "contributors"}) {
+    ASSERT_TRUE(r.image.aovs.count(name)) << name;
+    double sum = 0;
+    for (const Color& c : r.image.aovs[name]) sum += c.r + c.g + c.b;
+    EXPECT_GT(sum, 0.0) << name;
+  }
+}
+
+}  // namespace
+}  // namespace rc

@@ -1,0 +1,120 @@
+// Record weights, the in-front test, neighbour clamping and the octree against brute force.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cache/radiance_cache.h"
+#include "cache/record_octree.h"
+#include "cache/record_weights.h"
+#include "core/rng.h"
+
+namespace rc {
+namespace {
+
+TEST(RecordWeights, WardFormula) {
+  const Vec3 n(0, 0, 1);
+  // Distance R/2 along the plane, same normal: w = 1/(0.5 + 0) = 2.
+  EXPECT_FLOAT_EQ(recordWeight(Vec3(0.5f, 0, 0), n, Vec3(0.0f), n, 1.0f), 2.0f);
+  // Normals 60° apart at the record's position: √(1 − cos 60°) = √0.5.
+  const Vec3 n60(std::sin(kPi / 3), 0, std::cos(kPi / 3));
+  EXPECT_NEAR(recordWeight(Vec3(0.0f), n60, Vec3(0.0f), n, 1.0f), 1.0f / std::sqrt(0.5f), 1e-5f);
+}
+
+TEST(RecordWeights, NoDivisionByZero) {
+  const Vec3 n(0, 0, 1);
+  // Exactly at the record: finite, huge.
+  const float w0 = recordWeight(Vec3(1, 2, 3), n, Vec3(1, 2, 3), n, 0.5f);
+  EXPECT_TRUE(std::isfinite(w0));
+  EXPECT_GE(w0, 1e5f);
+  // R = 0: finite and (away from the record) tiny, so it never contributes.
+  const float wR = recordWeight(Vec3(1, 0, 0), n, Vec3(0.0f), n, 0.0f);
+  EXPECT_TRUE(std::isfinite(wR));
+  EXPECT_EQ(contributionWeight(Vec3(1, 0, 0), n, Vec3(0.0f), n, 0.0f, 0.3f), 0.0f);
+  // Opposite normals: w = 1/(0 + √2) and never contributes.
+  EXPECT_NEAR(recordWeight(Vec3(0.0f), -n, Vec3(0.0f), n, 1.0f), 1.0f / std::sqrt(2.0f), 1e-6f);
+  EXPECT_EQ(contributionWeight(Vec3(0.0f), -n, Vec3(0.0f), n, 1.0f, 10.0f), 0.0f);
+  // a = 0.3: contributes inside 0.3·R on a plane, not outside.
+  EXPECT_GT(contributionWeight(Vec3(0.29f, 0, 0), n, Vec3(0.0f), n, 1.0f, 0.3f), 0.0f);
+  EXPECT_EQ(contributionWeight(Vec3(0.31f, 0, 0), n, Vec3(0.0f), n, 1.0f, 0.3f), 0.0f);
+}
+
+TEST(RecordWeights, InFrontTest) {
+  const Vec3 n(0, 0, 1);
+  // Record above p (on a step, its surface in front of p along the normal): rejected.
+  EXPECT_TRUE(recordInFront(Vec3(0.0f), n, Vec3(0, 0, 0.2f), n, 1.0f));
+  EXPECT_EQ(contributionWeight(Vec3(0.0f), n, Vec3(0.1f, 0, 0.2f), n, 1.0f, 1.0f), 0.0f);
+  // Record below p (behind): allowed.
+  EXPECT_FALSE(recordInFront(Vec3(0, 0, 0.2f), n, Vec3(0.0f), n, 1.0f));
+  // Coplanar: allowed (the ε absorbs rounding).
+  EXPECT_FALSE(recordInFront(Vec3(0.1f, 0, -1e-7f), n, Vec3(0.0f), n, 1.0f));
+}
+
+TEST(NeighbourClamping, LipschitzBound) {
+  float rNew = 10.0f, rj = 1.0f;
+  clampNeighbourRadii(Vec3(0.0f), rNew, Vec3(2, 0, 0), rj);
+  EXPECT_FLOAT_EQ(rNew, 3.0f);  // 1 + 2
+  EXPECT_FLOAT_EQ(rj, 1.0f);
+  float rNew2 = 0.5f, rk = 10.0f;
+  clampNeighbourRadii(Vec3(0.0f), rNew2, Vec3(0, 3, 0), rk);
+  EXPECT_FLOAT_EQ(rNew2, 0.5f);
+  EXPECT_FLOAT_EQ(rk, 3.5f);  // 0.5 + 3
+}
+
+TEST(NeighbourClamping, AppliedOnInsert) {
+  RadianceCache cache(1, Vec3(-1), Vec3(1));
+  const std::vector<float> z(3, 0.0f), none;
+  RecordInfo a;
+  a.p = Vec3(0.0f);
+  a.R = 0.1f;
+  a.a = 1.0f;
+  cache.insert({a}, z, z, z, none, none, none);
+  RecordInfo b = a;
+  b.p = Vec3(0.5f, 0, 0);
+  b.R = 5.0f;  // influence sphere 5 overlaps a's; clamp to 0.1 + 0.5
+  cache.insert({b}, z, z, z, none, none, none);
+  EXPECT_FLOAT_EQ(cache.info(1).R, 0.6f);
+  EXPECT_FLOAT_EQ(cache.info(0).R, 0.1f);
+  // A record facing the other way (other side of a wall) is not a neighbour.
+  RecordInfo c = b;
+  c.frame = Frame::fromNormal(Vec3(0, 0, -1));
+  c.R = 5.0f;
+  cache.insert({c}, z, z, z, none, none, none);
+  EXPECT_FLOAT_EQ(cache.info(2).R, 5.0f);
+}
+
+TEST(RecordOctree, EqualsBruteForceOnRandomRecords) {
+  Rng rng(7);
+  RadianceCache cache(1, Vec3(0.0f), Vec3(1.0f));
+  std::vector<RecordInfo> infos;
+  for (int i = 0; i < 1000; ++i) {
+    RecordInfo r;
+    // Some records outside the initial bounds exercise root growth.
+    r.p = Vec3(rng.nextFloat() * 3 - 1, rng.nextFloat() * 3 - 1, rng.nextFloat() * 0.2f);
+    Vec3 n(rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f, 1.0f);
+    r.frame = Frame::fromNormal(glm::normalize(n));
+    // Radii over three orders of magnitude, including ones bigger than the root.
+    r.R = std::pow(10.0f, rng.nextFloat() * 3 - 2.5f) * (i % 97 == 0 ? 100.0f : 1.0f);
+    r.a = 0.5f + rng.nextFloat() * 2.5f;
+    infos.push_back(r);
+  }
+  const std::vector<float> z(3 * infos.size(), 0.0f), none;
+  cache.insert(infos, z, z, z, none, none, none);
+  size_t total = 0;
+  for (int q = 0; q < 2000; ++q) {
+    const Vec3 p(rng.nextFloat() * 3.4f - 1.2f, rng.nextFloat() * 3.4f - 1.2f, rng.nextFloat() * 0.2f);
+    const Vec3 n = glm::normalize(Vec3(rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f, 1.0f));
+    Lookup a, b;
+    cache.lookup(p, n, a);
+    cache.lookupBruteForce(p, n, b);
+    ASSERT_EQ(a.entries.size(), b.entries.size()) << "query " << q;
+    for (size_t i = 0; i < a.entries.size(); ++i) {
+      EXPECT_EQ(a.entries[i].record, b.entries[i].record);
+      EXPECT_EQ(a.entries[i].weight, b.entries[i].weight);
+    }
+    total += b.entries.size();
+  }
+  EXPECT_GT(total, 2000u);  // the test exercises real overlaps, not empty lookups
+}
+
+}  // namespace
+}  // namespace rc

@@ -1,0 +1,139 @@
+#pragma once
+// Small programmatic scenes and a render helper for the cache tests (no scene files needed, so
+// these tests pin the integrator, not the parser). A Cornell-like box: glossy (or diffuse) floor,
+// coloured diffuse walls, a square area light under the ceiling, camera looking in.
+#include <memory>
+#include <string>
+
+#include "bsdf/bsdf_factory.h"
+#include "cache/rcache_integrator.h"
+#include "cl/sh_backend.h"
+#include "core/properties.h"
+#include "geometry/accel.h"
+#include "render/integrator.h"
+#include "render/light_sampler.h"
+#include "render/path_integrator.h"
+#include "scene/scene.h"
+
+namespace rc::test {
+
+inline Property rgbProp(float r, float g, float b) {
+  Property p;
+  p.type = Property::Type::Rgb;
+  p.vec = Vec3(r, g, b);
+  return p;
+}
+inline Property floatProp(float v) {
+  Property p;
+  p.type = Property::Type::Float;
+  p.number = v;
+  return p;
+}
+inline Property stringProp(const std::string& s) {
+  Property p;
+  p.type = Property::Type::String;
+  p.text = s;
+  return p;
+}
+
+inline BsdfPtr diffuse(float r, float g, float b) {
+  Properties props;
+  props.pluginType = "diffuse";
+  props.set("reflectance", rgbProp(r, g, b));
+  return createBsdf(props, {});
+}
+
+// alpha ≤ 0 → diffuse grey floor instead.
+inline BsdfPtr glossy(float alpha) {
+  Properties props;
+  props.pluginType = "roughconductor";
+  props.set("distribution", stringProp("ggx"));
+  props.set("alpha", floatProp(alpha));
+  props.set("material", stringProp("none"));
+  props.set("specular_reflectance", rgbProp(0.8f, 0.8f, 0.8f));
+  return createBsdf(props, {});
+}
+
+// Quad p0,p1,p2,p3 (counter-clockwise seen from the side its normal faces).
+inline void addQuad(Scene& s, Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p3, int bsdf, int emitter = -1) {
+  Mesh m;
+  m.name = "quad#" + std::to_string(s.meshes.size());
+  m.positions = {p0, p1, p2, p3};
+  m.triangles = {glm::uvec3(0, 1, 2), glm::uvec3(0, 2, 3)};
+  m.bsdf = bsdf;
+  m.emitter = emitter;
+  s.meshes.push_back(m);
+}
+
+// Box [-1,1]×[0,2]×[-1,1] open toward +z where the camera stands; floor at y = 0.
+inline Scene boxScene(float floorAlpha, int width = 32, int height = 24) {
+  Scene s;
+  s.bsdfs.push_back(floorAlpha > 0 ? glossy(floorAlpha) : diffuse(0.6f, 0.6f, 0.6f));  // 0 floor
+  s.bsdfs.push_back(diffuse(0.7f, 0.1f, 0.1f));                                          // 1 red
+  s.bsdfs.push_back(diffuse(0.1f, 0.6f, 0.1f));                                          // 2 green
+  s.bsdfs.push_back(diffuse(0.7f, 0.7f, 0.2f));                                          // 3 yellow
+  s.bsdfs.push_back(diffuse(0.0f, 0.0f, 0.0f));                                          // 4 light body
+  addQuad(s, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}, 0);     // floor, normal +y
+  addQuad(s, {-1, 0, -1}, {1, 0, -1}, {1, 2, -1}, {-1, 2, -1}, 3);   // back wall, +z
+  addQuad(s, {-1, 0, 1}, {-1, 0, -1}, {-1, 2, -1}, {-1, 2, 1}, 1);   // left wall, +x
+  addQuad(s, {1, 0, -1}, {1, 0, 1}, {1, 2, 1}, {1, 2, -1}, 2);       // right wall, −x
+  addQuad(s, {-1, 2, -1}, {1, 2, -1}, {1, 2, 1}, {-1, 2, 1}, 3);     // ceiling, −y
+  Emitter light;
+  light.type = EmitterType::Area;
+  light.radiance = Color(12.0f);
+  light.mesh = static_cast<int>(s.meshes.size());
+  s.emitters.push_back(light);
+  addQuad(s, {-0.3f, 1.98f, -0.3f}, {0.3f, 1.98f, -0.3f}, {0.3f, 1.98f, 0.3f}, {-0.3f, 1.98f, 0.3f}, 4, 0);  // light, −y
+  // Camera at z = 3.2 looking toward −z (Mitsuba look-at: local +z is the view direction).
+  const Vec3 eye(0, 1, 3.2f), target(0, 0.8f, 0), up(0, 1, 0);
+  const Vec3 dir = glm::normalize(target - eye);
+  const Vec3 left = glm::normalize(glm::cross(up, dir));
+  const Vec3 newUp = glm::cross(dir, left);
+  s.camera.toWorld = Mat4(Vec4(left, 0), Vec4(newUp, 0), Vec4(dir, 0), Vec4(eye, 1));
+  s.camera.fovDegrees = 45.0f;
+  s.film.width = width;
+  s.film.height = height;
+  s.film.filter = "box";
+  s.sampleCount = 1;
+  s.integrator.maxDepth = 3;
+  return s;
+}
+
+struct RenderResult {
+  Image image;
+  RenderStats stats;
+};
+
+inline RenderResult renderScene(const Scene& scene, const IntegratorSettings& settings, int spp, uint64_t seed = 0,
+                                const std::string& cacheSave = "", const std::string& cacheLoad = "",
+                                std::vector<std::string> aovs = {}) {
+  Accel accel(scene);
+  LightSampler lights(scene);
+  auto backend = makeScalarBackend();
+  RenderOptions opt;
+  opt.spp = spp;
+  opt.seed = seed;
+  opt.quiet = true;
+  opt.cacheSave = cacheSave;
+  opt.cacheLoad = cacheLoad;
+  opt.aovs = aovs;
+  RenderContext ctx{scene, accel, lights, opt, backend.get()};
+  auto integ = settings.type == "path" ? makePathIntegrator(settings) : makeRcacheIntegrator(settings);
+  RenderResult r;
+  r.image = integ->render(ctx, r.stats);
+  return r;
+}
+
+inline IntegratorSettings rcacheSettings(const Scene& s, std::map<std::string, std::string> params = {}) {
+  IntegratorSettings is = s.integrator;
+  is.type = "rcache";
+  is.params = params;
+  return is;
+}
+inline IntegratorSettings pathSettings(const Scene& s) {
+  IntegratorSettings is = s.integrator;
+  is.type = "path";
+  return is;
+}
+
+}  // namespace rc::test

@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# End-to-end CLI tests: exit codes, messages (file:line), outputs written whole or not at all.
+# Usage: cli_tests.sh path/to/rcache  (run by CTest, label "cli")
+set -uo pipefail
+RC=$1
+DATA=$(cd "$(dirname "$0")/data" && pwd)
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+fails=0
+pass() { echo "PASS $1"; }
+fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
+
+# expect_error NAME EXPECTED_SUBSTRING -- args...
+expect_error() {
+  local name=$1 want=$2; shift 3
+  local err code
+  err=$("$RC" "$@" 2>&1 >/dev/null); code=$?
+  if [ $code -eq 0 ]; then fail "$name" "exit 0, expected failure"; return; fi
+  if [ $code -gt 3 ]; then fail "$name" "exit $code (crash?): $err"; return; fi
+  if ! grep -qF -- "$want" <<<"$err"; then fail "$name" "message lacks '$want': $err"; return; fi
+  if [ "$(grep -c . <<<"$err")" -ne 1 ]; then fail "$name" "expected one line, got: $err"; return; fi
+  pass "$name"
+}
+
+expect_error no_scene "no scene file" -- --quiet
+expect_error unknown_flag "unknown option '--bogus'" -- "$DATA/tiny.xml" --bogus
+expect_error bad_spp "--spp" -- "$DATA/tiny.xml" --spp -3
+expect_error missing_file "nope.xml" -- "$TMP/nope.xml" -o "$TMP/a.exr"
+expect_error malformed "malformed.xml:" -- "$DATA/malformed.xml" -o "$TMP/m.exr"
+expect_error unknown_plugin "velvet_unicorn" -- "$DATA/unknown_plugin.xml" -o "$TMP/u.exr"
+expect_error unknown_plugin_line "unknown_plugin.xml:4" -- "$DATA/unknown_plugin.xml" -o "$TMP/u.exr"
+expect_error missing_mesh "does_not_exist.obj" -- "$DATA/missing_mesh.xml" -o "$TMP/mm.exr"
+expect_error zero_width "width" -- "$DATA/zero_width.xml" -o "$TMP/z.exr"
+expect_error bad_extension "unsupported output format" -- "$DATA/tiny.xml" -o "$TMP/out.jpg2"
+expect_error unwritable "not writable" -- "$DATA/tiny.xml" -o "/proc/nope/out.exr"
+expect_error bad_device "opencl:9:9" -- "$DATA/tiny.xml" --integrator rcache --device opencl:9:9 -o "$TMP/d.exr" --quiet
+expect_error undefined_param "undefined_thing" -- "$DATA/tiny.xml" -o "$TMP/p.exr" -D res='$undefined_thing'
+ls "$TMP"/*.exr >/dev/null 2>&1 && fail no_partial_outputs "$(ls "$TMP")" || pass no_partial_outputs
+
+# A path-traced render writes the image and the stats JSON with the documented keys.
+if "$RC" "$DATA/tiny.xml" --integrator path -o "$TMP/path.exr" --quiet --stats "$TMP/path.json" --seed 3 -t 2; then
+  [ -s "$TMP/path.exr" ] && pass path_image || fail path_image "no image"
+  python3 - "$TMP/path.json" <<'PY' && pass path_stats || fail path_stats "keys missing"
+import json, sys
+s = json.load(open(sys.argv[1]))
+for k in ("time_s", "integrator", "device"):
+    assert k in s, k
+PY
+else
+  fail path_render "exit $?"
+fi
+
+# Determinism: same seed and threads → identical image.
+"$RC" "$DATA/tiny.xml" --integrator path -o "$TMP/path2.exr" --quiet --seed 3 -t 2
+d=$("$RC" diff "$TMP/path.exr" "$TMP/path2.exr" --json)
+python3 -c "import json,sys; d=json.loads(sys.argv[1]); sys.exit(0 if d['max_abs']==0 else 1)" "$d" \
+  && pass deterministic || fail deterministic "$d"
+
+# rcache renders, its statistics name the materials' techniques.
+if "$RC" "$DATA/tiny.xml" --integrator rcache -o "$TMP/rc.png" --quiet --stats "$TMP/rc.json" -t 2; then
+  python3 - "$TMP/rc.json" <<'PY' && pass rcache_stats || fail rcache_stats "keys missing"
+import json, sys
+s = json.load(open(sys.argv[1]))
+for k in ("time_s", "records", "rays", "lookups", "materials"):
+    assert k in s, k
+for m in s["materials"]:
+    for k in ("name", "technique", "sh_order", "table_ms", "table_cache_hit"):
+        assert k in m, k
+PY
+else
+  fail rcache_render "exit $?"
+fi
+
+# diff --json prints the three keys; a heat map is written.
+out=$("$RC" diff "$TMP/path.exr" "$TMP/path2.exr" --json --heatmap "$TMP/heat.png")
+python3 -c "import json,sys; d=json.loads(sys.argv[1]); [d[k] for k in ('rmse','relmse','max_abs')]" "$out" \
+  && [ -s "$TMP/heat.png" ] && pass diff_json || fail diff_json "$out"
+
+# Ctrl-C during a long render: exit 130 and a valid (readable) partial image.
+"$RC" "$DATA/tiny.xml" --integrator path -D res=256 --spp 100000 -o "$TMP/int.exr" --quiet -t 2 &
+pid=$!
+sleep 1.5
+kill -INT $pid
+wait $pid; code=$?
+if [ $code -eq 130 ] && "$RC" diff "$TMP/int.exr" "$TMP/int.exr" --json >/dev/null; then pass interrupt
+else fail interrupt "exit $code"; fi
+
+echo "$fails failure(s)"
+[ $fails -eq 0 ]

@@ -1,0 +1,113 @@
+// Core utilities: error metrics, properties use-tracking, RNG determinism, parallelFor, atomic writes.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdio>
+#include <fstream>
+#include <sys/stat.h>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/frame.h"
+#include "core/image_metrics.h"
+#include "core/parallel.h"
+#include "core/properties.h"
+#include "core/rng.h"
+
+using namespace rc;
+
+TEST(ImageMetrics, MatchesHandComputedValues) {
+  std::vector<Color> ref = {Color(1, 0, 0), Color(0.5f, 0.5f, 0.5f)};
+  std::vector<Color> test = {Color(1.1f, 0, 0), Color(0.5f, 0.5f, 0.3f)};
+  const ImageError e = compareImages(test, ref);
+  // Squared errors: 0.01 (r of pixel 0) and 0.04 (b of pixel 1) over 6 samples.
+  EXPECT_NEAR(e.rmse, std::sqrt(0.05 / 6), 1e-6);
+  EXPECT_NEAR(e.relmse, (0.01 / 1.01 + 0.04 / 0.26) / 6, 1e-6);
+  EXPECT_NEAR(e.maxAbs, 0.2, 1e-6);
+  EXPECT_EQ(compareImages(ref, ref).relmse, 0.0);
+}
+
+TEST(ImageMetrics, CountsNonFiniteAndRejectsSizeMismatch) {
+  std::vector<Color> ref = {Color(1), Color(1)};
+  std::vector<Color> test = {Color(NAN), Color(1)};
+  EXPECT_EQ(compareImages(test, ref).nonFinite, 1u);
+  EXPECT_EQ(compareImages(test, ref).relmse, 0.0);
+  EXPECT_THROW(compareImages({Color(1)}, ref), Error);
+}
+
+TEST(Properties, TracksUseAndChecksTypes) {
+  Properties p;
+  Property f;
+  f.type = Property::Type::Float;
+  f.number = 0.25;
+  f.line = 7;
+  p.set("alpha", f);
+  Property s;
+  s.type = Property::Type::String;
+  s.text = "ggx";
+  p.set("distribution", s);
+  EXPECT_EQ(p.unusedNames().size(), 2u);
+  EXPECT_FLOAT_EQ(p.getFloat("alpha", 0.1f), 0.25f);
+  EXPECT_EQ(p.getColor("alpha", Color(0)), Color(0.25f));
+  EXPECT_THROW(p.getFloat("distribution", 0), Error);
+  ASSERT_EQ(p.unusedNames().size(), 0u);
+  EXPECT_EQ(p.lineOf("alpha"), 7);
+  EXPECT_EQ(p.getInt("missing", 3), 3);
+}
+
+TEST(Rng, DeterministicPerStreamAndInRange) {
+  Rng a(42, 7), b(42, 7), c(42, 8);
+  bool differs = false;
+  for (int i = 0; i < 1000; ++i) {
+    const float x = a.nextFloat();
+    EXPECT_EQ(x, b.nextFloat());
+    differs |= x != c.nextFloat();
+    EXPECT_GE(x, 0.0f);
+    EXPECT_LT(x, 1.0f);
+  }
+  EXPECT_TRUE(differs);
+}
+
+TEST(Frame, DuffBasisIsOrthonormalAndRightHanded) {
+  Rng rng(1);
+  for (int i = 0; i < 1000; ++i) {
+    Vec3 n(rng.nextFloat() * 2 - 1, rng.nextFloat() * 2 - 1, rng.nextFloat() * 2 - 1);
+    if (i == 0) n = Vec3(0, 0, -1);
+    if (i == 1) n = Vec3(0, 0, 1);
+    if (glm::length(n) < 1e-3f) continue;
+    n = glm::normalize(n);
+    const Frame f = Frame::fromNormal(n);
+    EXPECT_NEAR(glm::dot(f.t, f.b), 0, 1e-5);
+    EXPECT_NEAR(glm::dot(f.t, f.n), 0, 1e-5);
+    EXPECT_NEAR(glm::length(f.t), 1, 1e-5);
+    EXPECT_NEAR(glm::length(f.b), 1, 1e-5);
+    EXPECT_NEAR(glm::length(glm::cross(f.t, f.b) - f.n), 0, 1e-5);
+    const Vec3 v = glm::normalize(Vec3(0.3f, -0.2f, 0.9f));
+    EXPECT_NEAR(glm::length(f.toWorld(f.toLocal(v)) - v), 0, 1e-5);
+  }
+}
+
+TEST(Parallel, CoversRangeOnceAndRethrows) {
+  setThreadCount(2);
+  std::vector<std::atomic<int>> hits(1000);
+  parallelFor(hits.size(), 7, [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) hits[i]++;
+  });
+  for (auto& h : hits) EXPECT_EQ(h.load(), 1);
+  EXPECT_THROW(parallelFor(100, 1, [](size_t b, size_t) {
+                 if (b == 50) throw Error("boom");
+               }),
+               Error);
+  setThreadCount(0);
+}
+
+TEST(AtomicFile, WritesWholeFileOrNothing) {
+  const std::string dir = ::testing::TempDir() + "/rc_atomic";
+  mkdir(dir.c_str(), 0755);
+  const std::string path = dir + "/out.json";
+  writeFileAtomically(path, "{\"a\": 1}\n");
+  std::ifstream f(path);
+  std::string text((std::istreambuf_iterator<char>(f)), {});
+  EXPECT_EQ(text, "{\"a\": 1}\n");
+  EXPECT_THROW(writeFileAtomically("/nonexistent-dir/x.json", "x"), Error);
+}
