@@ -14,6 +14,7 @@
 #include "app/diff_command.h"
 #include "app/progress_bar.h"
 #include "app/stats_report.h"
+#include "cache/cache_params.h"
 #include "cache/rcache_integrator.h"
 #include "cl/sh_backend.h"
 #include "cl/verify.h"
@@ -90,8 +91,10 @@ int runRender(const std::vector<std::string>& args) {
   std::vector<std::string> warnings;
   Scene scene = loadScene(ra.scenePath, lo, &warnings);
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
-  // -D also reaches the integrator's own parameters (a, rays, order, ...), overriding the file.
-  for (const auto& kv : ra.defines) scene.integrator.params[kv.first] = kv.second;
+  // -D also reaches the integrator's own parameters (a, rays, order, ...), overriding the file;
+  // other names are scene parameters only.
+  for (const auto& kv : ra.defines)
+    if (isIntegratorParamName(kv.first)) scene.integrator.params[kv.first] = kv.second;
   const double loadS = secondsSince(tStart);
 
   const auto tBvh = Clock::now();

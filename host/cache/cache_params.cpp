@@ -37,6 +37,15 @@ bool toBool(const std::string& name, const std::string& v) {
 
 }  // namespace
 
+bool isIntegratorParamName(const std::string& name) {
+  static const char* const kNames[] = {"max_depth", "rr_depth", "hide_emitters", "a", "rays", "order", "weber",
+                                       "adaptive", "min_a_scale", "gradients", "rmin", "rmax", "secondary_a_scale",
+                                       "secondary_rays", "cache_depth", "batch", "frame", "mode"};
+  for (const char* n : kNames)
+    if (name == n) return true;
+  return false;
+}
+
 RcacheParams parseRcacheParams(const std::map<std::string, std::string>& params) {
   RcacheParams p;
   for (const auto& [name, v] : params) {

@@ -42,6 +42,11 @@ struct RcacheParams {
 // Throws rc::Error("rcache parameter 'x': ...") for an unknown name or a malformed value.
 RcacheParams parseRcacheParams(const std::map<std::string, std::string>& params);
 
+// True for a name parseRcacheParams understands (its own and the path integrator's shared ones).
+// The CLI forwards a -D name=value to the integrator only for these names: the others are scene
+// parameters ($res, $spp, ...), as in Mitsuba.
+bool isIntegratorParamName(const std::string& name);
+
 // M×N with N = 4M and M·N ≥ rays (M ≥ 2).
 void hemisphereCells(int rays, int& M, int& N);
 

@@ -57,7 +57,8 @@ python3 -c "import json,sys; d=json.loads(sys.argv[1]); sys.exit(0 if d['max_abs
   && pass deterministic || fail deterministic "$d"
 
 # rcache renders, its statistics name the materials' techniques.
-if "$RC" "$DATA/tiny.xml" --integrator rcache -o "$TMP/rc.png" --quiet --stats "$TMP/rc.json" -t 2; then
+# A scene parameter given with -D (res) reaches the scene, not the rcache integrator's parameters.
+if "$RC" "$DATA/tiny.xml" --integrator rcache -D res=16 -D rays=64 -o "$TMP/rc.png" --quiet --stats "$TMP/rc.json" -t 2; then
   python3 - "$TMP/rc.json" <<'PY' && pass rcache_stats || fail rcache_stats "keys missing"
 import json, sys
 s = json.load(open(sys.argv[1]))
