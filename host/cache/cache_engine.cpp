@@ -333,20 +333,32 @@ void CacheEngine::buildRecords(const CacheKey& key, const std::vector<ShadePoint
     infos[b].p = cands[b].hit.p;
     infos[b].frame = cands[b].frame;
     // Gradient limit (as Mitsuba's irrcache clamps R by E/|∇E|): over the influence radius the
-    // first-order change of the mean radiance λ₀ may not exceed λ₀ itself, so gradients near
-    // touching geometry cannot extrapolate to negative radiance.
+    // first-order change of the record's coefficients may not exceed their own size,
+    // ‖∇Λ‖·a·R ≤ ‖Λ‖ (norms over all coefficients and channels, so the higher bands of a glossy
+    // record are held to the same bound as its mean), so gradients near touching geometry cannot
+    // extrapolate to negative or exploding radiance.
     float Rg = INFINITY;
+    const size_t n2 = static_cast<size_t>(key.order) * key.order;
     if (params_.gradients) {
-      double l0 = 0, g2 = 0;
-      const size_t n2 = static_cast<size_t>(key.order) * key.order;
-      for (int c = 0; c < 3; ++c) {
-        const size_t o = K * b + n2 * c;
-        l0 += pr.lambda[o];
+      double l2 = 0, g2 = 0;
+      for (size_t o = K * b; o < K * b + 3 * n2; ++o) {
+        l2 += double(pr.lambda[o]) * pr.lambda[o];
         g2 += double(pr.gradT[o]) * pr.gradT[o] + double(pr.gradB[o]) * pr.gradB[o];
       }
-      if (g2 > 0 && l0 > 0) Rg = static_cast<float>(l0 / std::sqrt(g2) / std::sqrt(3.0) / aForLevel(key.level));
+      if (g2 > 0) Rg = static_cast<float>(std::sqrt(l2 / g2) / aForLevel(key.level));
     }
     infos[b].R = std::min(std::max(std::min(R, Rg), params_.rMinPx * fp), params_.rMaxPx * fp);
+    // The pixel-footprint floor r_min can push R past the gradient limit (records in corners,
+    // where R is tiny and the gradient ~Λ/R): scale the gradient down so the bound holds at the
+    // radius actually used. Without this, a record 3 px wide extrapolates a gradient meant for a
+    // sub-pixel neighbourhood and paints isolated pixels many times too bright.
+    if (infos[b].R > Rg) {
+      const float s = Rg / infos[b].R;
+      for (size_t o = K * b; o < K * b + 3 * n2; ++o) {
+        pr.gradT[o] *= s;
+        pr.gradB[o] *= s;
+      }
+    }
     infos[b].a = aForLevel(key.level);
     if (key.level == 0 && cands[b].pixel >= 0) recordPixels_.push_back(cands[b].pixel);
   }
