@@ -1,5 +1,7 @@
 #include "core/properties.h"
 
+#include <limits>
+
 #include "core/error.h"
 
 namespace rc {
@@ -26,6 +28,9 @@ int Properties::getInt(const std::string& name, int fallback) const {
   const Property* p = find(name);
   if (!p) return fallback;
   if (p->type != Property::Type::Integer) throw typeError(name, "an integer", p->line);
+  // The parser keeps 64-bit integers; converting one beyond int's range would be undefined.
+  if (!(p->number >= double(std::numeric_limits<int>::min()) && p->number <= double(std::numeric_limits<int>::max())))
+    throw Error("parameter '" + name + "' (line " + std::to_string(p->line) + ") is out of range for a 32-bit integer");
   return static_cast<int>(p->number);
 }
 

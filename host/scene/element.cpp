@@ -1,5 +1,8 @@
 #include "scene/element.h"
 
+#include <cmath>
+#include <cstdio>
+
 #include "scene/transform_parser.h"
 #include "scene/value_parsing.h"
 
@@ -33,6 +36,19 @@ bool isPropertyTag(const std::string& tag) {
 
 namespace {
 
+// Values are stored as 32-bit floats: a finite double beyond ±3.4e38 would silently become Inf.
+float toFloat(double v) {
+  const float f = static_cast<float>(v);
+  if (!std::isfinite(f)) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%g", v);
+    throw Error(std::string(text) + " is out of range for a 32-bit float");
+  }
+  return f;
+}
+
+Vec3 toVec3(const std::vector<double>& v) { return Vec3(toFloat(v[0]), toFloat(v[1]), toFloat(v[2])); }
+
 // Parses one property element into `p` (and its text form into `raw`).
 void parseProperty(const pugi::xml_node& node, const std::string& tag, Property& p, std::string& raw) {
   const pugi::xml_attribute value = node.attribute("value");
@@ -55,12 +71,12 @@ void parseProperty(const pugi::xml_node& node, const std::string& tag, Property&
         throw Error("give either 'value' or x/y/z, not both");
       const std::vector<double> v = parseNumberList(value.value());
       if (v.size() != 3) throw Error("needs 3 numbers, got " + std::to_string(v.size()));
-      p.vec = Vec3(float(v[0]), float(v[1]), float(v[2]));
+      p.vec = toVec3(v);
       raw = value.value();
     } else {
       auto comp = [&](const char* n) {
         const pugi::xml_attribute a = node.attribute(n);
-        return a ? float(parseNumber(a.value())) : 0.0f;
+        return a ? toFloat(parseNumber(a.value())) : 0.0f;
       };
       p.vec = Vec3(comp("x"), comp("y"), comp("z"));
       raw = std::to_string(p.vec.x) + ", " + std::to_string(p.vec.y) + ", " + std::to_string(p.vec.z);
@@ -75,6 +91,7 @@ void parseProperty(const pugi::xml_node& node, const std::string& tag, Property&
   } else if (tag == "float") {
     p.type = Property::Type::Float;
     p.number = parseNumber(raw);
+    toFloat(p.number);
   } else if (tag == "boolean") {
     p.type = Property::Type::Boolean;
     p.boolean = parseBoolean(raw);
@@ -84,8 +101,8 @@ void parseProperty(const pugi::xml_node& node, const std::string& tag, Property&
   } else if (tag == "rgb") {
     p.type = Property::Type::Rgb;
     const std::vector<double> v = parseNumberList(raw);
-    if (v.size() == 1) p.vec = Vec3(float(v[0]));
-    else if (v.size() == 3) p.vec = Vec3(float(v[0]), float(v[1]), float(v[2]));
+    if (v.size() == 1) p.vec = Vec3(toFloat(v[0]));
+    else if (v.size() == 3) p.vec = toVec3(v);
     else throw Error("rgb needs 1 or 3 numbers, got " + std::to_string(v.size()));
   } else if (tag == "spectrum") {
     // Only a constant spectrum maps to RGB without a colour-matching step; wavelength:value
@@ -94,7 +111,7 @@ void parseProperty(const pugi::xml_node& node, const std::string& tag, Property&
     const std::vector<double> v = parseNumberList(raw);
     if (v.size() != 1) throw Error("only constant spectra are supported (one value)");
     p.type = Property::Type::Rgb;
-    p.vec = Vec3(float(v[0]));
+    p.vec = Vec3(toFloat(v[0]));
   }
 }
 

@@ -156,6 +156,11 @@ MeshData loadPly(const std::string& path) {
       PlyElement e;
       long long count = -1;
       if (!(ls >> e.name >> count) || count < 0) throw Error(where + "malformed element line");
+      // A second vertex/face element would append vertices without the first one's normals/uvs
+      // (arrays of different lengths) or mix index bases; no writer produces one.
+      for (const PlyElement& prev : elements)
+        if (prev.name == e.name && (e.name == "vertex" || e.name == "face"))
+          throw Error(where + "element '" + e.name + "' is declared twice");
       e.count = static_cast<size_t>(count);
       elements.push_back(e);
     } else if (kw == "property") {
@@ -207,6 +212,7 @@ MeshData loadPly(const std::string& path) {
         if (ilist < 0) throw Error("element 'face' lacks a 'vertex_indices' list");
       }
       const bool hasN = inx >= 0 && iny >= 0 && inz >= 0, hasUv = iu >= 0 && iv >= 0;
+      if (e.props.empty()) continue;  // nothing to read, however large the count (no empty loop of 2^63)
       std::vector<double> vals(e.props.size());
       for (size_t k = 0; k < e.count; ++k) {
         std::vector<uint32_t> face;
@@ -217,7 +223,10 @@ MeshData loadPly(const std::string& path) {
             continue;
           }
           const double n = body.read(prop.countType);
+          // Each item takes at least one byte, so a length beyond the file is a lie (and one beyond
+          // size_t's range would make the conversion below undefined).
           if (n < 0) body.fail("negative list length");
+          if (n > double(data.size())) body.fail("list length exceeds the file size");
           for (size_t j = 0; j < static_cast<size_t>(n); ++j) {
             const double idx = body.read(prop.type);
             if (static_cast<int>(p) == ilist) {

@@ -2,6 +2,7 @@
 // <include>, ids and refs — and hands each plugin element to its builder.
 #include "scene/scene_loader.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <regex>
 
@@ -46,7 +47,9 @@ void Loader::processFile(const std::shared_ptr<XmlFile>& file, const std::string
   if (!std::regex_match(v, m, versionFormat))
     throw Error(whereOf(*file, root) + ": malformed version '" + v + "' (expected major.minor.patch)");
   // Version 0.x/1.x files use Mitsuba 0.6 parameter names that Mitsuba 3 upgrades on load; we do not.
-  if (std::stoi(m[1]) < 2)
+  // (compared as text: std::stoi would throw std::out_of_range on a huge major number)
+  const std::string major = m[1].str().substr(std::min(m[1].str().find_first_not_of('0'), m[1].str().size() - 1));
+  if (major.size() == 1 && major[0] < '2')
     throw Error(whereOf(*file, root) + ": scene version " + v + " (Mitsuba 0.6 syntax) is not supported; use 3.0.0");
   for (const pugi::xml_attribute& a : root.attributes())
     if (std::string(a.name()) != "version")
