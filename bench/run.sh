@@ -12,4 +12,5 @@ if [ -n "${missing:-}" ]; then
   $sudo apt-get update -qq && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq $missing
 fi
 scripts/build.sh
-exec python3 bench/run_bench.py "$@"
+# The Debian interpreter: python3-matplotlib is installed for it (a pyenv python3 on PATH lacks it).
+exec /usr/bin/python3 bench/run_bench.py "$@"
