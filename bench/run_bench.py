@@ -100,7 +100,19 @@ def main():
     ap.add_argument("--scenes", default=None, help="comma-separated scene names (default: all bench scenes)")
     ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--no-plot", action="store_true")
+    ap.add_argument("--replot", action="store_true", help="redraw the error-vs-time plots from OUT/results.jsonl")
     args = ap.parse_args()
+    if args.replot:
+        by_scene = {}
+        with open(os.path.join(args.out, "results.jsonl")) as f:
+            for line in f:
+                p = json.loads(line)
+                pts = by_scene.setdefault(p["scene"], {"path": [], "rcache": []})
+                if p["method"] == "path" or (p["method"] == "rcache" and p.get("ladder")):
+                    pts[p["method"]].append(p)
+        for name, pts in by_scene.items():
+            plot_scene(name, pts, os.path.join(args.out, "%s_error_vs_time.png" % name))
+        return
     cfg = QUICK if args.quick else FULL
     scenes = args.scenes.split(",") if args.scenes else (SCENES[:2] if args.quick else SCENES)
     if not os.path.exists(RCACHE):
@@ -196,10 +208,19 @@ def plot_scene(name, points, path):
         print("bench: matplotlib missing (apt-get install python3-matplotlib); no plot", file=sys.stderr)
         return
     fig, ax = plt.subplots(figsize=(5, 4), dpi=120)
-    for method, style in (("path", "o-"), ("rcache", "s-")):
+    for method, style, colour in (("path", "o", "C0"), ("rcache", "s", "C1")):
         pts = sorted((p["time_s"], p["relmse"]) for p in points[method])
-        if pts:
-            ax.loglog([t for t, _ in pts], [e for _, e in pts], style, label=method)
+        if not pts:
+            continue
+        # Every measured point, and a line through the best error reached by each time (the
+        # settings one would pick at that budget): the ladder mixes rays, a and spp.
+        front, best = [], float("inf")
+        for t, e in pts:
+            if e < best:
+                front.append((t, e))
+                best = e
+        ax.loglog([t for t, _ in pts], [e for _, e in pts], style, color=colour, alpha=0.5)
+        ax.loglog([t for t, _ in front], [e for _, e in front], style + "-", color=colour, label=method)
     ax.set_xlabel("wall time (s)")
     ax.set_ylabel("relMSE vs reference")
     ax.set_title(name)
