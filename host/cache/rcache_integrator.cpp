@@ -226,7 +226,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     for (auto& [k, c] : engine.caches()) n += c->size();
     return n;
   };
-  auto renderBand = [&](int band) {
+  auto renderBand = [&](int band, bool coverOnly) {
     const int y0 = band * rowsPerBand, y1 = std::min(H, y0 + rowsPerBand);
     std::vector<Vec2> pos;
     std::vector<int> pix;
@@ -245,6 +245,10 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     cameraRays += prim.size();
     std::vector<ShadePoint> pts(prim.size());
     for (size_t i = 0; i < prim.size(); ++i) pts[i] = prim[i].sp;
+    if (coverOnly) {
+      engine.fill(pts, {}, false);
+      return;
+    }
     std::vector<Color> direct(pts.size(), Color(0.0f));
     parallelFor(pts.size(), 64, [&](size_t b, size_t e) {
       for (size_t i = b; i < e; ++i) {
@@ -278,14 +282,26 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     }
     bandFilms[static_cast<size_t>(band)] = std::move(tile);
   };
+  // Coverage pre-pass: the fill passes looked up pixel centres, the final pass uses jittered
+  // samples, some of which are not covered yet. Creating those records first (camera rays and
+  // lookups only) means the shading pass below rarely creates any, so it rarely has to shade
+  // earlier bands again (before this, about the whole final pass was shaded twice).
+  for (int band = 0; band < bands && !interrupted; ++band) {
+    if (cancelled()) {
+      interrupted = true;
+      break;
+    }
+    renderBand(band, true);
+    if (ctx.progress) ctx.progress("final-pass coverage", double(band + 1), double(bands));
+  }
   int lastCreating = -1;
-  for (int band = 0; band < bands; ++band) {
+  for (int band = 0; band < bands && !interrupted; ++band) {
     if (cancelled()) {
       interrupted = true;
       break;
     }
     const size_t before = totalRecords();
-    renderBand(band);
+    renderBand(band, false);
     if (totalRecords() != before) lastCreating = band;
     if (ctx.progress) ctx.progress("render", double(band + 1), double(bands));
   }
@@ -297,7 +313,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
       interrupted = true;
       break;
     }
-    renderBand(band);
+    renderBand(band, false);
   }
   for (auto& t : bandFilms)
     if (t) film.merge(*t);
