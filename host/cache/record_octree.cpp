@@ -6,16 +6,6 @@
 
 namespace rc {
 
-struct RecordOctree::Node {
-  std::vector<uint32_t> ids;
-  std::array<std::unique_ptr<Node>, 8> child;
-};
-
-namespace {
-constexpr int kMaxDepth = 40;  // half-size shrinks 2^40: far below float resolution of any scene
-}
-
-
 RecordOctree::RecordOctree(const Vec3& lo, const Vec3& hi) : root_(std::make_unique<Node>()) {
   center_ = 0.5f * (lo + hi);
   const Vec3 ext = hi - lo;
@@ -60,33 +50,6 @@ void RecordOctree::insert(uint32_t id, const Vec3& p, float radius) {
   node->ids.push_back(id);
   if (node == root_.get()) rootRadius_ = std::max(rootRadius_, radius);
   ++count_;
-}
-
-void RecordOctree::query(const Vec3& p, const std::function<void(uint32_t)>& visit) const {
-  querySphere(p, 0.0f, visit);
-}
-
-void RecordOctree::querySphere(const Vec3& p, float r, const std::function<void(uint32_t)>& visit) const {
-  struct Item { const Node* node; Vec3 c; float h; };
-  std::vector<Item> stack;
-  stack.reserve(64);
-  stack.push_back({root_.get(), center_, half_});
-  while (!stack.empty()) {
-    const Item it = stack.back();
-    stack.pop_back();
-    // Records here have radius ≤ h and centre inside the node: their spheres lie in the box grown
-    // by h (the root may also hold bigger ones: rootRadius_).
-    const float grown = it.node == root_.get() ? std::max(it.h, rootRadius_) : it.h;
-    const float g = it.h + grown + r;
-    if (std::fabs(p.x - it.c.x) > g || std::fabs(p.y - it.c.y) > g || std::fabs(p.z - it.c.z) > g) continue;
-    for (uint32_t id : it.node->ids) visit(id);
-    const float ch = 0.5f * it.h;
-    for (int k = 0; k < 8; ++k) {
-      if (!it.node->child[k]) continue;
-      const Vec3 cc = it.c + Vec3((k & 1) ? ch : -ch, (k & 2) ? ch : -ch, (k & 4) ? ch : -ch);
-      stack.push_back({it.node->child[k].get(), cc, ch});
-    }
-  }
 }
 
 }  // namespace rc
