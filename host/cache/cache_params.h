@@ -16,6 +16,7 @@
 //   frame        world  interpolation mode: world (records stored world-aligned) | record
 //   mode         radiance  radiance | tl (Tabellion–Lamorlette dominant-direction approximation)
 //   batch        256    records sampled and projected together
+//   share_pixel  true   samples of one pixel on the same surface share one cache lookup
 //   final_pass   true   false: stop after the cache fill (image = fill-pass estimate)
 #include <map>
 #include <string>
@@ -37,6 +38,7 @@ struct RcacheParams {
   bool worldFrame = true;
   bool tlMode = false;
   int batch = 256;
+  bool sharePixel = true;
 };
 
 // Throws rc::Error("rcache parameter 'x': ...") for an unknown name or a malformed value.

@@ -245,8 +245,36 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     cameraRays += prim.size();
     std::vector<ShadePoint> pts(prim.size());
     for (size_t i = 0; i < prim.size(); ++i) pts[i] = prim[i].sp;
+    // Cached indirect light is smooth (the cache itself interpolates over ≥ r_min pixels), so
+    // the samples of one pixel that land on the same surface share one lookup at the first of
+    // them; direct light, emission and importance-sampled (sharp) materials stay per sample, so
+    // edges, shadows and sharp reflections keep their anti-aliasing. share_pixel=false: one
+    // lookup per sample.
+    std::vector<size_t> rep(pts.size());
+    std::vector<size_t> repPoints;  // indices into pts of the points actually looked up
+    std::vector<size_t> slot(pts.size(), 0);
+    for (size_t i = 0; i < pts.size(); ++i) {
+      rep[i] = i;
+      if (params_.sharePixel && pts[i].active && engine.technique(pts[i]) == 1) {
+        for (size_t j = i; j-- > 0 && pix[j] == pix[i];) {
+          const ShadePoint& a = pts[j];
+          if (rep[j] == j && a.active && a.hit.bsdf == pts[i].hit.bsdf && a.hit.mesh == pts[i].hit.mesh &&
+              a.hit.sphere == pts[i].hit.sphere && glm::dot(a.frame.n, pts[i].frame.n) > 0.995f &&
+              engine.technique(a) == 1) {
+            rep[i] = j;
+            break;
+          }
+        }
+      }
+      if (rep[i] == i) {
+        slot[i] = repPoints.size();
+        repPoints.push_back(i);
+      }
+    }
+    std::vector<ShadePoint> repPts(repPoints.size());
+    for (size_t k = 0; k < repPoints.size(); ++k) repPts[k] = pts[repPoints[k]];
     if (coverOnly) {
-      engine.fill(pts, {}, false);
+      engine.fill(repPts, {}, false);
       return;
     }
     std::vector<Color> direct(pts.size(), Color(0.0f));
@@ -257,9 +285,15 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
         direct[i] = directLight(ctx, pts[i].hit, pts[i].frame, pts[i].wo, *scene.bsdfs[pts[i].hit.bsdf], rng);
       }
     });
-    std::vector<Color> ind;
-    std::vector<LookupAov> aov;
-    engine.indirect(pts, ind, &aov);
+    std::vector<Color> repInd;
+    std::vector<LookupAov> repAov;
+    engine.indirect(repPts, repInd, &repAov);
+    std::vector<Color> ind(pts.size());
+    std::vector<LookupAov> aov(pts.size());
+    for (size_t i = 0; i < pts.size(); ++i) {
+      ind[i] = repInd[slot[rep[i]]];
+      aov[i] = repAov[slot[rep[i]]];
+    }
     auto tile = std::make_unique<TileFilm>(film.makeTile(0, y0, W, y1));
     for (size_t i = 0; i < pts.size(); ++i) {
       const Color L = prim[i].Le + direct[i] + ind[i];
