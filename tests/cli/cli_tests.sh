@@ -77,6 +77,28 @@ out=$("$RC" diff "$TMP/path.exr" "$TMP/path2.exr" --json --heatmap "$TMP/heat.pn
 python3 -c "import json,sys; d=json.loads(sys.argv[1]); [d[k] for k in ('rmse','relmse','max_abs')]" "$out" \
   && [ -s "$TMP/heat.png" ] && pass diff_json || fail diff_json "$out"
 
+# A kernel that fails to build: the default device falls back to the scalar path with one notice
+# and renders; an explicitly requested OpenCL device fails with the build log and no image.
+KROOT=$(cd "$(dirname "$0")/../../kernels" && pwd)
+mkdir -p "$TMP/badk"
+cp -r "$KROOT"/. "$TMP/badk/"
+echo "this is not OpenCL C" >> "$TMP/badk/brdf_dot.cl"
+if RC_KERNEL_DIR="$TMP/badk" "$RC" "$DATA/tiny.xml" --integrator rcache -D rays=64 -o "$TMP/kfall.exr" -t 2 \
+     --stats "$TMP/kfall.json" 2> "$TMP/kfall.err" >/dev/null \
+   && grep -q "notice: OpenCL device unusable" "$TMP/kfall.err" && grep -q '"device": "cpu' "$TMP/kfall.json" \
+   && [ -s "$TMP/kfall.exr" ]; then pass kernel_build_fallback
+else fail kernel_build_fallback "$(head -c 300 "$TMP/kfall.err")"; fi
+if RC_KERNEL_DIR="$TMP/badk" "$RC" "$DATA/tiny.xml" --integrator rcache --device opencl -o "$TMP/kfail.exr" -t 2 \
+     --quiet 2> "$TMP/kfail.err" >/dev/null; then fail kernel_build_explicit "exit 0"
+elif grep -q "CL_BUILD_PROGRAM_FAILURE" "$TMP/kfail.err" && grep -q "brdf_dot.cl" "$TMP/kfail.err" && [ ! -e "$TMP/kfail.exr" ]; then
+  pass kernel_build_explicit
+else fail kernel_build_explicit "$(head -c 300 "$TMP/kfail.err")"; fi
+
+# No OpenCL platform at all (ICD loader finds no vendor): scalar path, one notice, still renders.
+if OCL_ICD_VENDORS="$TMP/no_icds" "$RC" "$DATA/tiny.xml" --integrator rcache -D rays=64 -o "$TMP/noicd.exr" -t 2 \
+     2> "$TMP/noicd.err" >/dev/null && grep -q "^notice:" "$TMP/noicd.err" && [ -s "$TMP/noicd.exr" ]; then pass no_opencl_platform
+else fail no_opencl_platform "$(head -c 300 "$TMP/noicd.err")"; fi
+
 # Ctrl-C during a long render: exit 130 and a valid (readable) partial image.
 "$RC" "$DATA/tiny.xml" --integrator path -D res=256 --spp 100000 -o "$TMP/int.exr" --quiet -t 2 &
 pid=$!
