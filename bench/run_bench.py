@@ -100,6 +100,8 @@ def main():
     ap.add_argument("--scenes", default=None, help="comma-separated scene names (default: all bench scenes)")
     ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--no-plot", action="store_true")
+    ap.add_argument("--res", type=int, default=None, help="override the image size of the chosen mode")
+    ap.add_argument("--ref-spp", type=int, default=None, help="override the reference spp of the chosen mode")
     ap.add_argument("--replot", action="store_true", help="redraw the error-vs-time plots from OUT/results.jsonl")
     args = ap.parse_args()
     if args.replot:
@@ -113,13 +115,19 @@ def main():
         for name, pts in by_scene.items():
             plot_scene(name, pts, os.path.join(args.out, "%s_error_vs_time.png" % name))
         return
-    cfg = QUICK if args.quick else FULL
+    cfg = dict(QUICK if args.quick else FULL)
+    if args.res:
+        cfg["res"] = args.res
+    if args.ref_spp:
+        cfg["ref_spp"] = args.ref_spp
     scenes = args.scenes.split(",") if args.scenes else (SCENES[:2] if args.quick else SCENES)
     if not os.path.exists(RCACHE):
         sys.exit("bench: %s not found; run scripts/build.sh first" % RCACHE)
     os.makedirs(args.out, exist_ok=True)
     os.makedirs(os.path.join(args.out, "ref"), exist_ok=True)
     jsonl_path = os.path.join(args.out, "results.jsonl")
+    if os.path.exists(jsonl_path):  # keep the previous run's lines next to the new ones' file
+        os.replace(jsonl_path, jsonl_path + ".prev")
     machine = "%s, %d threads" % (platform.processor() or platform.machine(), args.threads)
     try:
         with open("/proc/cpuinfo") as f:
