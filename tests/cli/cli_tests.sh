@@ -56,6 +56,15 @@ d=$("$RC" diff "$TMP/path.exr" "$TMP/path2.exr" --json)
 python3 -c "import json,sys; d=json.loads(sys.argv[1]); sys.exit(0 if d['max_abs']==0 else 1)" "$d" \
   && pass deterministic || fail deterministic "$d"
 
+# Thread count does not change the image (per-pixel / per-item RNG streams, serial cache control flow).
+for integ in path rcache; do
+  "$RC" "$DATA/tiny.xml" --integrator $integ -D rays=64 -o "$TMP/t1_$integ.exr" --quiet -t 1 --seed 5
+  "$RC" "$DATA/tiny.xml" --integrator $integ -D rays=64 -o "$TMP/t2_$integ.exr" --quiet -t 2 --seed 5
+  d=$("$RC" diff "$TMP/t1_$integ.exr" "$TMP/t2_$integ.exr" --json)
+  python3 -c "import json,sys; sys.exit(0 if json.loads(sys.argv[1])['max_abs']==0 else 1)" "$d" \
+    && pass "threads_independent_$integ" || fail "threads_independent_$integ" "$d"
+done
+
 # rcache renders, its statistics name the materials' techniques.
 # A scene parameter given with -D (res) reaches the scene, not the rcache integrator's parameters.
 if "$RC" "$DATA/tiny.xml" --integrator rcache -D res=16 -D rays=64 -o "$TMP/rc.png" --quiet --stats "$TMP/rc.json" -t 2; then
@@ -98,6 +107,27 @@ else fail kernel_build_explicit "$(head -c 300 "$TMP/kfail.err")"; fi
 if OCL_ICD_VENDORS="$TMP/no_icds" "$RC" "$DATA/tiny.xml" --integrator rcache -D rays=64 -o "$TMP/noicd.exr" -t 2 \
      2> "$TMP/noicd.err" >/dev/null && grep -q "^notice:" "$TMP/noicd.err" && [ -s "$TMP/noicd.exr" ]; then pass no_opencl_platform
 else fail no_opencl_platform "$(head -c 300 "$TMP/noicd.err")"; fi
+
+# Bad-input corpus beyond the mutation fuzzer: each case either fails with file:line and leaves no
+# image, or renders a sensible (finite) image.
+sed 's|<rgb name="radiance" value="10"/>|<rgb name="radiance" value="-5"/>|' "$DATA/tiny.xml" > "$TMP/neg_light.xml"
+if "$RC" "$TMP/neg_light.xml" -o "$TMP/neg_light.exr" --quiet 2> "$TMP/neg_light.err"; then fail negative_light "exit 0"
+elif grep -q "neg_light.xml:[0-9]*:.*non-negative" "$TMP/neg_light.err" && [ ! -e "$TMP/neg_light.exr" ]; then pass negative_light
+else fail negative_light "$(cat "$TMP/neg_light.err")"; fi
+sed 's|<rgb name="radiance" value="10"/>|<rgb name="radiance" value="0"/>|' "$DATA/tiny.xml" > "$TMP/zero_light.xml"
+if "$RC" "$TMP/zero_light.xml" -o "$TMP/zero_light.exr" --quiet -t 2 \
+   && "$RC" diff "$TMP/zero_light.exr" "$TMP/zero_light.exr" --json | grep -q '"non_finite": 0'; then pass zero_light_renders
+else fail zero_light_renders "exit $?"; fi
+echo "not an image" > "$TMP/not_an_image.exr"
+sed "s|</scene>|<emitter type=\"envmap\"><string name=\"filename\" value=\"not_an_image.exr\"/></emitter></scene>|" \
+  "$DATA/tiny.xml" > "$TMP/bad_envmap.xml"
+if "$RC" "$TMP/bad_envmap.xml" -o "$TMP/bad_envmap.exr" --quiet 2> "$TMP/bad_envmap.err"; then fail envmap_not_image "exit 0"
+elif grep -q "bad_envmap.xml:[0-9]*:.*envmap" "$TMP/bad_envmap.err" && [ ! -e "$TMP/bad_envmap.exr" ]; then pass envmap_not_image
+else fail envmap_not_image "$(cat "$TMP/bad_envmap.err")"; fi
+sed 's|origin="0, 1, 4"|origin="0, 0.6, 0.2"|' "$DATA/tiny.xml" > "$TMP/inside.xml"  # inside the sphere
+if "$RC" "$TMP/inside.xml" --integrator rcache -D rays=64 -o "$TMP/inside.exr" --quiet -t 2 \
+   && "$RC" diff "$TMP/inside.exr" "$TMP/inside.exr" --json | grep -q '"non_finite": 0'; then pass camera_inside_geometry
+else fail camera_inside_geometry "exit $?"; fi
 
 # Ctrl-C during a long render: exit 130 and a valid (readable) partial image.
 "$RC" "$DATA/tiny.xml" --integrator path -D res=256 --spp 100000 -o "$TMP/int.exr" --quiet -t 2 &
