@@ -56,6 +56,42 @@ def render(scene_path, out_exr, integrator, spp, res, threads, defines, stats_pa
     return wall, usage.ru_maxrss / 1024.0, stats
 
 
+# Mitsuba 3 as one more curve when some Python on this machine has it (never required). The child
+# process loads the scene with the same $res/$spp and times load + render (the interpreter start
+# and the mitsuba import are not counted: they are not part of rendering).
+MITSUBA_RENDER = r"""
+import sys, time
+t0 = time.perf_counter()
+import mitsuba as mi
+mi.set_variant("scalar_rgb")
+t1 = time.perf_counter()
+scene = mi.load_file(sys.argv[1], res=int(sys.argv[3]), spp=int(sys.argv[4]))
+img = mi.render(scene, spp=int(sys.argv[4]))
+t2 = time.perf_counter()
+mi.Bitmap(img).write(sys.argv[2])
+print(t2 - t1)
+"""
+
+
+def find_mitsuba_python():
+    for exe in [shutil.which("python3"), "/usr/bin/python3", sys.executable]:
+        if exe and subprocess.run([exe, "-c", "import mitsuba; mitsuba.set_variant('scalar_rgb')"],
+                                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode == 0:
+            return exe
+    return None
+
+
+def render_mitsuba(python, scene_path, out_exr, spp, res, threads):
+    cmd = ["taskset", "-c", "0-%d" % (threads - 1), python, "-c", MITSUBA_RENDER, scene_path, out_exr, str(res), str(spp)]
+    if not shutil.which("taskset"):
+        cmd = cmd[3:]
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if proc.returncode != 0:
+        print("bench: mitsuba failed on %s: %s" % (scene_path, proc.stderr.strip()[-300:]), file=sys.stderr)
+        return None
+    return float(proc.stdout.strip().splitlines()[-1])
+
+
 def diff(test, ref, heatmap=None):
     cmd = [RCACHE, "diff", test, ref, "--json"]
     if heatmap:
@@ -100,6 +136,7 @@ def main():
     ap.add_argument("--scenes", default=None, help="comma-separated scene names (default: all bench scenes)")
     ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--no-plot", action="store_true")
+    ap.add_argument("--no-mitsuba", action="store_true", help="skip the Mitsuba 3 curve even if mitsuba is installed")
     ap.add_argument("--res", type=int, default=None, help="override the image size of the chosen mode")
     ap.add_argument("--ref-spp", type=int, default=None, help="override the reference spp of the chosen mode")
     ap.add_argument("--replot", action="store_true", help="redraw the error-vs-time plots from OUT/results.jsonl")
@@ -109,8 +146,8 @@ def main():
         with open(os.path.join(args.out, "results.jsonl")) as f:
             for line in f:
                 p = json.loads(line)
-                pts = by_scene.setdefault(p["scene"], {"path": [], "rcache": []})
-                if p["method"] == "path" or (p["method"] == "rcache" and p.get("ladder")):
+                pts = by_scene.setdefault(p["scene"], {"path": [], "rcache": [], "mitsuba": []})
+                if p["method"] in ("path", "mitsuba") or (p["method"] == "rcache" and p.get("ladder")):
                     pts[p["method"]].append(p)
         for name, pts in by_scene.items():
             plot_scene(name, pts, os.path.join(args.out, "%s_error_vs_time.png" % name))
@@ -138,6 +175,8 @@ def main():
     except OSError:
         pass
     summary = []
+    mitsuba_python = None if args.no_mitsuba else find_mitsuba_python()
+    print("bench: Mitsuba 3 curve: %s" % (mitsuba_python or "off (no Python with mitsuba found)"), file=sys.stderr)
     with open(jsonl_path, "w") as jsonl:
         def emit(rec):
             rec.update(machine=machine, date=time.strftime("%Y-%m-%d"), quick=args.quick)
@@ -156,7 +195,18 @@ def main():
                 wall, _, _ = render(scene_path, ref, "path", cfg["ref_spp"], cfg["res"], args.threads, {},
                                     os.path.join(work, "ref_stats.json"))
                 emit(dict(scene=name, method="reference", spp=cfg["ref_spp"], time_s=wall))
-            points = {"path": [], "rcache": []}
+            points = {"path": [], "rcache": [], "mitsuba": []}
+            if mitsuba_python:
+                for spp in cfg["path_spp"]:
+                    out = os.path.join(work, "mitsuba_%d.exr" % spp)
+                    t = render_mitsuba(mitsuba_python, scene_path, out, spp, cfg["res"], args.threads)
+                    if t is None:
+                        break
+                    err = diff(out, ref)
+                    p = dict(scene=name, method="mitsuba", setting="scalar_rgb spp=%d" % spp, spp=spp, time_s=t,
+                             relmse=err["relmse"], rmse=err["rmse"], image=out)
+                    points["mitsuba"].append(p)
+                    emit(dict(p))
             for spp in cfg["path_spp"]:
                 out = os.path.join(work, "path_%d.exr" % spp)
                 wall, mem, stats = render(scene_path, out, "path", spp, cfg["res"], args.threads, {},
@@ -216,8 +266,8 @@ def plot_scene(name, points, path):
         print("bench: matplotlib missing (apt-get install python3-matplotlib); no plot", file=sys.stderr)
         return
     fig, ax = plt.subplots(figsize=(5, 4), dpi=120)
-    for method, style, colour in (("path", "o", "C0"), ("rcache", "s", "C1")):
-        pts = sorted((p["time_s"], p["relmse"]) for p in points[method])
+    for method, style, colour in (("path", "o", "C0"), ("rcache", "s", "C1"), ("mitsuba", "^", "C2")):
+        pts = sorted((p["time_s"], p["relmse"]) for p in points.get(method, []))
         if not pts:
             continue
         # Every measured point, and a line through the best error reached by each time (the
@@ -228,7 +278,8 @@ def plot_scene(name, points, path):
                 front.append((t, e))
                 best = e
         ax.loglog([t for t, _ in pts], [e for _, e in pts], style, color=colour, alpha=0.5)
-        ax.loglog([t for t, _ in front], [e for _, e in front], style + "-", color=colour, label=method)
+        label = "mitsuba scalar_rgb (load+render only)" if method == "mitsuba" else method + " (process wall time)"
+        ax.loglog([t for t, _ in front], [e for _, e in front], style + "-", color=colour, label=label)
     ax.set_xlabel("wall time (s)")
     ax.set_ylabel("relMSE vs reference")
     ax.set_title(name)
