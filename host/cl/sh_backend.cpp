@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "cl/cl_runtime.h"
+#include "cl/fallback_backend.h"
 #include "cl/opencl_backend.h"
 #include "core/error.h"
 
@@ -34,7 +35,8 @@ std::unique_ptr<ShBackend> makeShBackend(const std::string& deviceSpec, std::str
     } else {
       auto backend = std::make_unique<OpenClBackend>(cl::selectDevice(cl::DeviceSpec{cl::DeviceSpec::OpenClFirst}));
       backend->prepare(10);  // default glossy order: proves the compiler works on this device
-      return backend;
+      // A device that fails later (out of resources, lost) hands over to the scalar path.
+      return std::make_unique<FallbackBackend>(std::move(backend));
     }
   } catch (const std::exception& e) {
     reason = std::string("OpenCL device unusable: ") + e.what();
