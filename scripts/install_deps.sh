@@ -3,7 +3,8 @@
 # everything is present). Run as root or with sudo available.
 set -euo pipefail
 packages=(cmake g++ make pkg-config libembree-dev libopenimageio-dev libpugixml-dev libglm-dev
-          ocl-icd-opencl-dev opencl-headers pocl-opencl-icd clinfo libgtest-dev libbenchmark-dev)
+          ocl-icd-opencl-dev opencl-headers pocl-opencl-icd clinfo libgtest-dev libbenchmark-dev
+          clang libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
