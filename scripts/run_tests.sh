@@ -8,3 +8,6 @@ scripts/build.sh
 export RC_REQUIRE_OPENCL=1
 ctest --test-dir build --output-on-failure -j"$(nproc)" --timeout 600
 build/rcache verify --device opencl
+# ASan+UBSan build of the parser, core and SH suites (incl. the 4500-case mutation fuzzer): ~3 min on
+# 2 cores. The full sanitizer run (all CPU suites, ~12 min) is `scripts/run_sanitized.sh`.
+RC_SAN_LABELS='^(core|sh|scene)$' scripts/run_sanitized.sh
