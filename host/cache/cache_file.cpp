@@ -1,5 +1,6 @@
 #include "cache/cache_file.h"
 
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -41,8 +42,9 @@ struct Reader {
     pos += n * sizeof(float);
   }
   void need(size_t n) const {
-    if (pos + n > data.size()) throw Error(path + ": cache file is truncated");
+    if (n > data.size() || pos + n > data.size()) throw Error(path + ": cache file is truncated");
   }
+  size_t left() const { return data.size() - pos; }
 };
 
 void hashFloats(uint64_t& h, const float* v, size_t n) { h = fnv1a64(v, n * sizeof(float), h); }
@@ -126,6 +128,10 @@ std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expe
   if (r.get<uint64_t>() != expectedSceneHash)
     throw Error(path + ": cache file was made for another scene (geometry, materials, lights or max_depth differ)");
   const uint32_t count = r.get<uint32_t>();
+  // Counts are checked against the bytes left before anything is allocated: a damaged (or
+  // hostile) count must give a message, not a multi-gigabyte allocation.
+  constexpr size_t kCacheHeaderBytes = 16, kRecordInfoBytes = 14 * sizeof(float);
+  if (count > r.left() / kCacheHeaderBytes) throw Error(path + ": cache file is truncated (cache count " + std::to_string(count) + ")");
   std::vector<CacheFileEntry> entries(count);
   for (CacheFileEntry& e : entries) {
     e.key.level = r.get<int32_t>();
@@ -133,10 +139,16 @@ std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expe
     e.key.order = r.get<int32_t>();
     if (e.key.order < 1 || e.key.order > 20 || e.key.level < 0) throw Error(path + ": cache file has an invalid cache header");
     const uint32_t n = r.get<uint32_t>();
+    const size_t perRecord = kRecordInfoBytes + 3 * 3 * sizeof(float) * static_cast<size_t>(e.key.order) * e.key.order;
+    if (n > r.left() / perRecord) throw Error(path + ": cache file is truncated (record count " + std::to_string(n) + ")");
     e.infos.resize(n);
     for (RecordInfo& info : e.infos) {
       float v[14];
-      for (float& x : v) x = r.get<float>();
+      for (float& x : v) {
+        x = r.get<float>();
+        if (!std::isfinite(x)) throw Error(path + ": cache file has a non-finite record position, frame or radius");
+      }
+      if (!(v[12] > 0.0f) || !(v[13] > 0.0f)) throw Error(path + ": cache file has a record with radius or a ≤ 0");
       info.p = Vec3(v[0], v[1], v[2]);
       info.frame = Frame(Vec3(v[3], v[4], v[5]), Vec3(v[6], v[7], v[8]), Vec3(v[9], v[10], v[11]));
       info.R = v[12];
