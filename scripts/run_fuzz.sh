@@ -19,6 +19,6 @@ scratch2=$(mktemp -d)
 trap 'rm -rf "$scratch" "$scratch2"' EXIT
 export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 build-fuzz/fuzz_scene -max_len=8192 -timeout=5 -rss_limit_mb=2048 -max_total_time="$secs" -print_final_stats=1 \
-  -artifact_prefix=build-fuzz/artifacts/ "$scratch" tests/fuzz/corpus scenes scenes/stress tests/cli/data 2>&1 | tail -12
+  -artifact_prefix=build-fuzz/artifacts/ "$scratch" tests/fuzz/corpus scenes scenes/stress tests/cli/data 2>&1 | sed '/^"/d' | tail -25
 build-fuzz/fuzz_cache_file -max_len=65536 -timeout=5 -rss_limit_mb=2048 -max_total_time="$((secs / 2))" \
-  -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ "$scratch2" tests/fuzz/corpus_cache 2>&1 | tail -6
+  -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ "$scratch2" tests/fuzz/corpus_cache 2>&1 | sed '/^"/d' | tail -25

@@ -38,6 +38,7 @@ struct Reader {
   void floats(std::vector<float>& v, size_t n) {
     need(n * sizeof(float));
     v.resize(n);
+    if (n == 0) return;  // memcpy into an empty vector's null data() is undefined (found by fuzzing)
     std::memcpy(v.data(), data.data() + pos, n * sizeof(float));
     pos += n * sizeof(float);
   }
