@@ -8,30 +8,19 @@ base value). Prints one JSON line per render. Usage (after scripts/build.sh):
 import argparse
 import json
 import os
-import subprocess
-import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-RCACHE = os.path.join(ROOT, "build", "rcache")
+from run_bench import ROOT, render
+
 BASE = {"res": "96", "spp": "2", "rays": "1024", "a": "0.4"}
 KNOBS = [("res", ["64", "128", "192", "256"]), ("rays", ["256", "1024", "4096"]), ("order", ["4", "8", "12", "16"])]
 
 
 def run(scene, defines, threads, out_dir, tag):
-    exr = os.path.join(out_dir, tag + ".exr")
-    stats = os.path.join(out_dir, tag + ".json")
-    cmd = [RCACHE, scene, "--integrator", "rcache", "-o", exr, "--quiet", "--stats", stats, "-t", str(threads)]
-    for k, v in defines.items():
-        cmd += ["-D", "%s=%s" % (k, v)]
-    t0 = time.perf_counter()
-    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    _, status, usage = os.wait4(proc.pid, 0)
-    wall = time.perf_counter() - t0
-    err = proc.stderr.read()
-    if status != 0:
-        raise SystemExit("scaling: %s failed: %s" % (" ".join(cmd), err))
-    s = json.load(open(stats))
-    return dict(wall_s=wall, peak_mib=usage.ru_maxrss / 1024.0, records=s.get("records"), rays=s.get("rays"),
+    """One rcache render through the benchmark driver's runner (wall time, peak RSS, stats)."""
+    params = {k: v for k, v in defines.items() if k not in ("res", "spp")}
+    wall, mem, s = render(scene, os.path.join(out_dir, tag + ".exr"), "rcache", int(defines["spp"]),
+                          int(defines["res"]), threads, params, os.path.join(out_dir, tag + ".json"))
+    return dict(wall_s=wall, peak_mib=mem, records=s.get("records"), rays=s.get("rays"),
                 time_cache_fill_s=s.get("time_cache_fill_s"), time_final_pass_s=s.get("time_final_pass_s"),
                 lookups=s.get("lookups"))
 
