@@ -79,6 +79,7 @@ CacheKey CacheEngine::keyFor(const ShadePoint& sp) const {
   k.level = sp.level;
   k.depth = maxDepth_ < 0 ? 0 : sp.depth;
   k.order = planOrder_[static_cast<size_t>(sp.hit.bsdf)];
+  if (sp.level > 0 && params_.secondaryOrder > 0) k.order = std::min(k.order, std::max(3, params_.secondaryOrder));
   return k;
 }
 
@@ -96,7 +97,12 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
       if (!sp.active) continue;
       if (maxDepth_ >= 0 && sp.depth + 1 > maxDepth_) continue;
       Rng rng(sp.seed, 1);
-      const Color L = directLight(ctx_, sp.hit, sp.frame, sp.wo, *ctx_.scene.bsdfs[sp.hit.bsdf], rng);
+      // Secondary hits (of record rays, or of continuations below importance-sampled surfaces):
+      // a Lambertian hit skips the BSDF strategy and its ray (see directLightLightOnly); for
+      // record rays its noise is averaged over the hemisphere anyway.
+      const Bsdf& bsdf = *ctx_.scene.bsdfs[sp.hit.bsdf];
+      const Color L = bsdf.isDiffuseOnly() ? directLightLightOnly(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng)
+                                           : directLight(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng);
       if (isFinite(L)) out[i] = L;
     }
   });
@@ -173,11 +179,12 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
   RadianceCache& cache = cacheFor(key);
   const size_t n = pts.size();
   lookups.assign(n, Lookup{});
-  const float a = aForLevel(key.level);
-  // Candidate spacing starts at half the largest record radius and halves every round down to
+  const float levelScale = aForLevel(key.level) / params_.a;
+  // Candidate spacing starts at half the largest influence radius and halves every round down to
   // the smallest: like the coarse-to-fine image passes, big records are placed first and the
   // gaps are filled afterwards, so few records are wasted on overlap.
-  float sepPx = std::max(params_.rMinPx, 0.5f * params_.rMaxPx);
+  const float minSepPx = params_.rMinPx * levelScale;
+  float sepPx = std::max(minSepPx, 0.5f * params_.rMaxPx * levelScale);
   int adaptiveRounds = 0;
   bool created = false;
   std::vector<size_t> todo(n);
@@ -231,17 +238,17 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
       accepted.query(sp.hit.p, [&](uint32_t id) {
         if (near) return;
         const ShadePoint& c = cands[id];
-        const float sep = a * sepPx * footprint(c.hit.p);
+        const float sep = sepPx * footprint(c.hit.p);
         if (glm::length(c.hit.p - sp.hit.p) < sep && glm::dot(c.frame.n, sp.frame.n) > 0.5f) near = true;
       });
       if (near) continue;
-      accepted.insert(static_cast<uint32_t>(cands.size()), sp.hit.p, a * sepPx * footprint(sp.hit.p));
+      accepted.insert(static_cast<uint32_t>(cands.size()), sp.hit.p, sepPx * footprint(sp.hit.p));
       cands.push_back(sp);
       if (static_cast<int>(cands.size()) >= params_.batch) break;
     }
     buildRecords(key, cands);
     created = true;
-    sepPx = std::max(params_.rMinPx, 0.5f * sepPx);
+    sepPx = std::max(minSepPx, 0.5f * sepPx);
     todo = uncovered;
   }
 }
@@ -347,7 +354,12 @@ void CacheEngine::buildRecords(const CacheKey& key, const std::vector<ShadePoint
       }
       if (g2 > 0) Rg = static_cast<float>(std::sqrt(l2 / g2) / aForLevel(key.level));
     }
-    infos[b].R = std::min(std::max(std::min(R, Rg), params_.rMinPx * fp), params_.rMaxPx * fp);
+    // r_min and r_max bound the influence radius a·R_i in pixel footprints (scaled like a at the
+    // coarser secondary caches): a record never covers less than r_min pixels (below that a
+    // cache only re-samples what a path tracer would, at 1000 rays a pixel) nor more than r_max.
+    const float aL = aForLevel(key.level), levelScale = aL / params_.a;
+    infos[b].R = std::min(std::max(std::min(R, Rg), params_.rMinPx * levelScale * fp / aL),
+                          params_.rMaxPx * levelScale * fp / aL);
     // The pixel-footprint floor r_min can push R past the gradient limit (records in corners,
     // where R is tiny and the gradient ~Λ/R): scale the gradient down so the bound holds at the
     // radius actually used. Without this, a record 3 px wide extrapolates a gradient meant for a
@@ -592,10 +604,13 @@ bool CacheEngine::adaptiveCheck(const CacheKey& key, const std::vector<ShadePoin
     q = end;
   }
   bool changed = false;
-  const float aMin = aForLevel(key.level) * params_.minAScale;
+  const float aL = aForLevel(key.level), aMin = aL * params_.minAScale, levelScale = aL / params_.a;
   for (const auto& [id, newA] : shrink) {
-    const float before = cache.info(id).a;
-    cache.shrinkA(id, newA, aMin);
+    const RecordInfo r = cache.info(id);
+    const float before = r.a;
+    // Shrinking stops at a·min_a_scale and where the influence radius would fall below r_min.
+    const float floorA = std::max(aMin, std::min(aL, params_.rMinPx * levelScale * footprint(r.p) / r.R));
+    cache.shrinkA(id, newA, floorA);
     if (cache.info(id).a < before) {
       changed = true;
       ++stats_.adaptiveShrinks;

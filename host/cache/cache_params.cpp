@@ -40,7 +40,7 @@ bool toBool(const std::string& name, const std::string& v) {
 bool isIntegratorParamName(const std::string& name) {
   static const char* const kNames[] = {"max_depth", "rr_depth", "hide_emitters", "a", "rays", "order", "weber",
                                        "adaptive", "min_a_scale", "gradients", "rmin", "rmax", "secondary_a_scale",
-                                       "secondary_rays", "cache_depth", "batch", "frame", "mode", "share_pixel"};
+                                       "secondary_rays", "secondary_order", "cache_depth", "batch", "frame", "mode", "share_pixel"};
   for (const char* n : kNames)
     if (name == n) return true;
   return false;
@@ -62,6 +62,7 @@ RcacheParams parseRcacheParams(const std::map<std::string, std::string>& params)
     else if (name == "rmax") p.rMaxPx = toFloat(name, v, 0.01f, 1e9f);
     else if (name == "secondary_a_scale") p.secondaryAScale = toFloat(name, v, 1.0f, 100.0f);
     else if (name == "secondary_rays") p.secondaryRays = toInt(name, v, 8, 65536);
+    else if (name == "secondary_order") p.secondaryOrder = toInt(name, v, 0, 16);
     else if (name == "cache_depth") p.cacheDepth = toInt(name, v, 1, 8);
     else if (name == "batch") p.batch = toInt(name, v, 1, 1 << 16);
     else if (name == "share_pixel") p.sharePixel = toBool(name, v);
@@ -75,7 +76,7 @@ RcacheParams parseRcacheParams(const std::map<std::string, std::string>& params)
       else throw bad(name, v, "must be radiance or tl");
     } else {
       throw Error("rcache parameter '" + name + "' is unknown (known: a, rays, order, weber, adaptive, min_a_scale, "
-                  "gradients, rmin, rmax, secondary_a_scale, secondary_rays, cache_depth, batch, frame, mode, share_pixel)");
+                  "gradients, rmin, rmax, secondary_a_scale, secondary_rays, secondary_order, cache_depth, batch, frame, mode, share_pixel)");
     }
   }
   if (p.rMinPx > p.rMaxPx) throw Error("rcache parameters: rmin must not exceed rmax");

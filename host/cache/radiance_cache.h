@@ -67,6 +67,12 @@ class RadianceCache {
   int order_;
   mutable std::shared_mutex mutex_;
   std::vector<RecordInfo> infos_;
+  // (p_i, (a_i·R_i)²) of every record, kept in step with infos_: the lookup's first test.
+  std::vector<glm::vec4> spheres_;
+  static glm::vec4 influenceSphere(const RecordInfo& r) {
+    const float reach = r.a * r.R;
+    return glm::vec4(r.p, reach * reach);
+  }
   std::vector<float> lambda_, gradT_, gradB_;           // record frame
   std::vector<float> lambdaW_, gradTW_, gradBW_;        // world frame (world-frame mode only)
   bool hasWorld_ = false;

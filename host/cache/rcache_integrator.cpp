@@ -132,6 +132,8 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     }
   }
 
+  std::vector<bool> twoSided(scene.bsdfs.size());
+  for (size_t i = 0; i < scene.bsdfs.size(); ++i) twoSided[i] = scene.bsdfs[i]->typeName() == "twosided";
   // Primary hits of a set of film positions.
   auto primaries = [&](const std::vector<Vec2>& pos, const std::vector<int>& pixel, const std::vector<uint64_t>& seeds,
                        std::vector<Primary>& out) {
@@ -142,7 +144,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
         const Hit hit = ctx.accel.intersect(ray);
         Primary& p = out[i];
         p.filmPos = pos[i];
-        const bool two = hit.valid() && hit.bsdf >= 0 && scene.bsdfs[hit.bsdf]->typeName() == "twosided";
+        const bool two = hit.valid() && hit.bsdf >= 0 && twoSided[static_cast<size_t>(hit.bsdf)];
         p.sp = makeShadePoint(hit, ray.d, 1, 0, seeds[i], two);
         p.sp.pixel = pixel[i];
         p.Le = Color(0.0f);
@@ -228,87 +230,101 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   };
   auto renderBand = [&](int band, bool coverOnly) {
     const int y0 = band * rowsPerBand, y1 = std::min(H, y0 + rowsPerBand);
-    std::vector<Vec2> pos;
-    std::vector<int> pix;
-    std::vector<uint64_t> seeds;
-    for (int y = y0; y < y1; ++y)
-      for (int x = 0; x < W; ++x)
-        for (int s = 0; s < spp; ++s) {
-          Rng rng = pixelRng(seed, W, x, y, s);
-          const float fx = rng.nextFloat(), fy = rng.nextFloat();
-          pos.emplace_back(x + fx, y + fy);
-          pix.push_back(y * W + x);
-          seeds.push_back(hashMix(seed, static_cast<uint64_t>(y) * W + x, 0xF1A1000000ULL + s));
-        }
-    std::vector<Primary> prim;
-    primaries(pos, pix, seeds, prim);
-    cameraRays += prim.size();
-    std::vector<ShadePoint> pts(prim.size());
-    for (size_t i = 0; i < prim.size(); ++i) pts[i] = prim[i].sp;
+    const size_t pixels = static_cast<size_t>(y1 - y0) * W, n = pixels * static_cast<size_t>(spp);
+    std::vector<Primary> prim(n);
+    std::vector<int> pix(n);
+    std::vector<Color> direct(coverOnly ? 0 : n, Color(0.0f));
     // Cached indirect light is smooth (the cache itself interpolates over ≥ r_min pixels), so
     // the samples of one pixel that land on the same surface share one lookup at the first of
     // them; direct light, emission and importance-sampled (sharp) materials stay per sample, so
     // edges, shadows and sharp reflections keep their anti-aliasing. share_pixel=false: one
-    // lookup per sample.
-    std::vector<size_t> rep(pts.size());
-    std::vector<size_t> repPoints;  // indices into pts of the points actually looked up
-    std::vector<size_t> slot(pts.size(), 0);
-    for (size_t i = 0; i < pts.size(); ++i) {
-      rep[i] = i;
-      if (params_.sharePixel && pts[i].active && engine.technique(pts[i]) == 1) {
-        for (size_t j = i; j-- > 0 && pix[j] == pix[i];) {
-          const ShadePoint& a = pts[j];
-          if (rep[j] == j && a.active && a.hit.bsdf == pts[i].hit.bsdf && a.hit.mesh == pts[i].hit.mesh &&
-              a.hit.sphere == pts[i].hit.sphere && glm::dot(a.frame.n, pts[i].frame.n) > 0.995f &&
-              engine.technique(a) == 1) {
-            rep[i] = j;
-            break;
+    // lookup per sample. rep[i] = the sample whose lookup sample i uses; repCount[pixel] = how
+    // many representatives the pixel has. Everything per pixel runs in parallel over pixels.
+    std::vector<uint32_t> rep(n);
+    std::vector<uint32_t> repCount(pixels, 0);
+    parallelFor(pixels, 16, [&](size_t pb, size_t pe) {
+      std::vector<uint32_t> pixelReps;
+      for (size_t q = pb; q < pe; ++q) {
+        const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
+        pixelReps.clear();
+        for (int s = 0; s < spp; ++s) {
+          const size_t i = q * spp + s;
+          Rng jitter = pixelRng(seed, W, x, y, s);
+          const float fx = jitter.nextFloat(), fy = jitter.nextFloat();
+          const Vec2 fpos(x + fx, y + fy);
+          const uint64_t sseed = hashMix(seed, static_cast<uint64_t>(y) * W + x, 0xF1A1000000ULL + s);
+          const Ray ray = camera.generate(fpos);
+          const Hit hit = ctx.accel.intersect(ray);
+          Primary& p = prim[i];
+          p.filmPos = fpos;
+          const bool two = hit.valid() && hit.bsdf >= 0 && twoSided[static_cast<size_t>(hit.bsdf)];
+          p.sp = makeShadePoint(hit, ray.d, 1, 0, sseed, two);
+          p.sp.pixel = y * W + x;
+          pix[i] = p.sp.pixel;
+          if (maxDepth != 0 && !settings_.hideEmitters) {
+            if (!hit.valid()) p.Le = ctx.lights.environment(ray.d);
+            else if (hit.emitter >= 0) p.Le = emitted(scene, hit, -ray.d);
+          }
+          const ShadePoint& sp = p.sp;
+          if (!coverOnly && sp.active && !(maxDepth >= 0 && 2 > maxDepth)) {
+            Rng rng(sp.seed, 1);
+            direct[i] = directLight(ctx, sp.hit, sp.frame, sp.wo, *scene.bsdfs[sp.hit.bsdf], rng);
+          }
+          rep[i] = static_cast<uint32_t>(i);
+          const bool cached = sp.active && engine.technique(sp) == 1;
+          if (params_.sharePixel && cached) {
+            for (uint32_t j : pixelReps) {
+              const ShadePoint& o = prim[j].sp;
+              if (o.hit.bsdf == sp.hit.bsdf && o.hit.mesh == sp.hit.mesh && o.hit.sphere == sp.hit.sphere &&
+                  glm::dot(o.frame.n, sp.frame.n) > 0.995f) {
+                rep[i] = j;
+                break;
+              }
+            }
+          }
+          if (rep[i] == i) {
+            ++repCount[q];
+            if (cached) pixelReps.push_back(static_cast<uint32_t>(i));
           }
         }
       }
+    });
+    cameraRays += n;
+    // Representatives in sample order (the order is what makes the image independent of threads).
+    std::vector<size_t> slot(n, 0);
+    std::vector<ShadePoint> repPts;
+    size_t total = 0;
+    for (uint32_t c : repCount) total += c;
+    repPts.reserve(total);
+    for (size_t i = 0; i < n; ++i)
       if (rep[i] == i) {
-        slot[i] = repPoints.size();
-        repPoints.push_back(i);
+        slot[i] = repPts.size();
+        repPts.push_back(prim[i].sp);
       }
-    }
-    std::vector<ShadePoint> repPts(repPoints.size());
-    for (size_t k = 0; k < repPoints.size(); ++k) repPts[k] = pts[repPoints[k]];
     if (coverOnly) {
       engine.fill(repPts, {}, false);
       return;
     }
-    std::vector<Color> direct(pts.size(), Color(0.0f));
-    parallelFor(pts.size(), 64, [&](size_t b, size_t e) {
-      for (size_t i = b; i < e; ++i) {
-        if (!pts[i].active || (maxDepth >= 0 && 2 > maxDepth)) continue;
-        Rng rng(pts[i].seed, 1);
-        direct[i] = directLight(ctx, pts[i].hit, pts[i].frame, pts[i].wo, *scene.bsdfs[pts[i].hit.bsdf], rng);
-      }
-    });
     std::vector<Color> repInd;
     std::vector<LookupAov> repAov;
     engine.indirect(repPts, repInd, &repAov);
-    std::vector<Color> ind(pts.size());
-    std::vector<LookupAov> aov(pts.size());
-    for (size_t i = 0; i < pts.size(); ++i) {
-      ind[i] = repInd[slot[rep[i]]];
-      aov[i] = repAov[slot[rep[i]]];
-    }
     auto tile = std::make_unique<TileFilm>(film.makeTile(0, y0, W, y1));
-    for (size_t i = 0; i < pts.size(); ++i) {
-      const Color L = prim[i].Le + direct[i] + ind[i];
+    for (size_t i = 0; i < n; ++i) {
+      const ShadePoint& sp = prim[i].sp;
+      const LookupAov& la = repAov[slot[rep[i]]];
+      const Color L = prim[i].Le + direct[i] + repInd[slot[rep[i]]];
       const int px = pix[i] % W, py = pix[i] / W;
       if (isFinite(L)) tile->splat(prim[i].filmPos, L);
       else ++nanSamples;
-      if (aovRadius) tile->addAov("radius", px, py, Color(aov[i].meanA, aov[i].meanRadiusPx, 0.0f));
-      if (aovContrib) tile->addAov("contributors", px, py, Color(float(aov[i].contributors)));
+      if (aovRadius) tile->addAov("radius", px, py, Color(la.meanA, la.meanRadiusPx, 0.0f));
+      if (aovContrib) tile->addAov("contributors", px, py, Color(float(la.contributors)));
       if (aovTech) {
         // red: BSDF sampling, green: irradiance cache (diffuse), blue: radiance cache (glossy)
         Color c(0.0f);
-        const int t = engine.technique(pts[i]);
+        const int t = engine.technique(sp);
         if (t == 2) c = Color(1, 0, 0);
         else if (t == 1) {
-          const auto& plan = tables.plans()[pts[i].hit.bsdf];
+          const auto& plan = tables.plans()[sp.hit.bsdf];
           c = plan.technique == kTechniqueIrradianceCache ? Color(0, 1, 0) : Color(0, 0, 1);
         }
         tile->addAov("technique", px, py, c);

@@ -1,7 +1,6 @@
 #include "cache/record_octree.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 namespace rc {
@@ -15,16 +14,14 @@ RecordOctree::RecordOctree(const Vec3& lo, const Vec3& hi) : root_(std::make_uni
 RecordOctree::~RecordOctree() = default;
 
 void RecordOctree::grow(const Vec3& p) {
-  // Double the root toward p until it contains p; the old root becomes one child.
+  // Double the root toward p until it contains p; the old root becomes one child. The old
+  // root's own records (bigger than it) stay in the root, where every query sees them.
   while (std::fabs(p.x - center_.x) > half_ || std::fabs(p.y - center_.y) > half_ ||
          std::fabs(p.z - center_.z) > half_) {
     const int ix = p.x < center_.x ? 0 : 1, iy = p.y < center_.y ? 0 : 1, iz = p.z < center_.z ? 0 : 1;
-    // The new centre is offset toward p; the old root is the child on the opposite side.
     const Vec3 newCenter = center_ + Vec3(ix ? half_ : -half_, iy ? half_ : -half_, iz ? half_ : -half_);
     auto newRoot = std::make_unique<Node>();
     const int oldChild = (ix ? 0 : 1) | (iy ? 0 : 2) | (iz ? 0 : 4);
-    // Records held by the old root may exceed its half-size: they move down one level, where
-    // the bound rootRadius_ no longer applies, so push them to the new root instead.
     newRoot->ids.swap(root_->ids);
     newRoot->child[oldChild] = std::move(root_);
     root_ = std::move(newRoot);
@@ -33,23 +30,43 @@ void RecordOctree::grow(const Vec3& p) {
   }
 }
 
+void RecordOctree::insertBox(Node* node, const Vec3& c, float h, int depthLeft, const Vec3& lo, const Vec3& hi,
+                             uint32_t id) {
+  if (depthLeft == 0) {
+    node->ids.push_back(id);
+    return;
+  }
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 cc = childCenter(c, h, k);
+    const float ch = 0.5f * h;
+    if (hi.x < cc.x - ch || lo.x > cc.x + ch || hi.y < cc.y - ch || lo.y > cc.y + ch || hi.z < cc.z - ch ||
+        lo.z > cc.z + ch)
+      continue;
+    if (!node->child[k]) node->child[k] = std::make_unique<Node>();
+    insertBox(node->child[k].get(), cc, ch, depthLeft - 1, lo, hi, id);
+  }
+}
+
 void RecordOctree::insert(uint32_t id, const Vec3& p, float radius) {
   if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return;
-  grow(p);
-  Node* node = root_.get();
-  Vec3 c = center_;
-  float h = half_;
-  for (int depth = 0; depth < kMaxDepth && 0.5f * h >= radius; ++depth) {
-    const int ix = p.x < c.x ? 0 : 1, iy = p.y < c.y ? 0 : 1, iz = p.z < c.z ? 0 : 1;
-    const int k = ix | (iy << 1) | (iz << 2);
-    h *= 0.5f;
-    c += Vec3(ix ? h : -h, iy ? h : -h, iz ? h : -h);
-    if (!node->child[k]) node->child[k] = std::make_unique<Node>();
-    node = node->child[k].get();
-  }
-  node->ids.push_back(id);
-  if (node == root_.get()) rootRadius_ = std::max(rootRadius_, radius);
   ++count_;
+  grow(p);
+  // Not finite, or at least as big as the root: a root record, a candidate for every query.
+  if (!(radius < half_)) {
+    root_->ids.push_back(id);
+    return;
+  }
+  const Vec3 lo = p - Vec3(radius), hi = p + Vec3(radius);
+  grow(lo);
+  grow(hi);
+  // Depth whose cells (width 2h) satisfy radius ≤ 2h < 2·radius: the box spans ≤ 3 cells an axis.
+  int depth = 0;
+  for (float h = half_; depth < kMaxDepth && h >= radius; h *= 0.5f) ++depth;
+  if (depth == 0) {
+    root_->ids.push_back(id);
+    return;
+  }
+  insertBox(root_.get(), center_, half_, depth, lo, hi, id);
 }
 
 }  // namespace rc

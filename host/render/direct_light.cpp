@@ -37,6 +37,19 @@ Color sampleLightMis(const RenderContext& ctx, const Hit& hit, const Frame& fram
   return f * ls->radiance * weight;
 }
 
+Color directLightLightOnly(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                           const Bsdf& bsdf, Rng& rng) {
+  const float uLight = rng.nextFloat();
+  const Vec2 u(rng.nextFloat(), rng.nextFloat());
+  if (ctx.lights.empty() || !hasSmoothLobe(bsdf)) return Color(0.0f);
+  const std::optional<LightSample> ls = ctx.lights.sample(hit.p, u, uLight);
+  if (!ls || !(ls->pdf > 0.0f || ls->delta)) return Color(0.0f);
+  const Color f = bsdf.eval(woLocal, frame.toLocal(ls->wi));
+  if (maxComponent(f) <= 0.0f || maxComponent(ls->radiance) <= 0.0f) return Color(0.0f);
+  if (!visible(ctx.accel, hit, *ls)) return Color(0.0f);
+  return f * ls->radiance;
+}
+
 Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorld, const Hit& next, float bsdfPdf,
                  bool delta) {
   if (next.valid()) {

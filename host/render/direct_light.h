@@ -46,6 +46,14 @@ Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorl
 Color directLight(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
                   const Bsdf& bsdf, Rng& rng);
 
+// Direct light by light sampling alone (weight 1, one shadow ray, no BSDF ray): unbiased whenever
+// the light sampler reaches every emitter with a non-zero pdf where it emits, which holds for all
+// emitter types we load. For a Lambertian BSDF the BSDF strategy rarely helps (its samples almost
+// never hit a small light) while costing a full ray; callers use this where the variance is
+// averaged anyway (the hits of a record's hemisphere rays). Consumes 3 numbers.
+Color directLightLightOnly(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                           const Bsdf& bsdf, Rng& rng);
+
 // Shadow ray from a surface hit toward a light sample; true when the light point is visible.
 bool visible(const Accel& accel, const Hit& hit, const struct LightSample& ls);
 

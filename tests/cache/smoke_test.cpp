@@ -30,13 +30,13 @@ TEST(RcacheSmoke, RendersBoxAndMatchesPathTracerRoughly) {
 // radius actually used; before that fix isolated pixels came out 10–100× too bright (relMSE 0.35
 // on the 128² Cornell box against 0.005 without gradients). Bound: no pixel of the gradient render
 // exceeds 3× the high-spp path-traced value (plus a small absolute slack for dark pixels), and its
-// relMSE stays within 1.1× that of the gradient-free render. r_min = 8 px makes the floor bind for
-// most corner records at this small size (measured: 0.00585 with the limit, 0.00698 without it,
+// relMSE stays within 1.1× that of the gradient-free render. r_min = 2.4 px of influence radius
+// (R_i ≥ 8 px at a = 0.3) makes the floor bind for most corner records at this small size (measured: 0.00585 with the limit, 0.00698 without it,
 // 0.00589 without gradients; renders are deterministic for a seed).
 TEST(RcacheSmoke, GradientsCreateNoOutliersInCorners) {
   const Scene s = test::boxScene(0.3f, 48, 36);
-  auto withGrad = test::renderScene(s, test::rcacheSettings(s, {{"gradients", "true"}, {"rays", "256"}, {"rmin", "8"}}), 4);
-  auto noGrad = test::renderScene(s, test::rcacheSettings(s, {{"gradients", "false"}, {"rays", "256"}, {"rmin", "8"}}), 4);
+  auto withGrad = test::renderScene(s, test::rcacheSettings(s, {{"gradients", "true"}, {"rays", "256"}, {"rmin", "2.4"}}), 4);
+  auto noGrad = test::renderScene(s, test::rcacheSettings(s, {{"gradients", "false"}, {"rays", "256"}, {"rmin", "2.4"}}), 4);
   auto pt = test::renderScene(s, test::pathSettings(s), 256);
   int outliers = 0;
   for (size_t i = 0; i < pt.image.pixels.size(); ++i) {
