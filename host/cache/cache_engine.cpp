@@ -410,21 +410,22 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
   RadianceCache& cache = cacheFor(key);
   out.assign(pts.size(), Color(0.0f));
   const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
-  const bool world = params_.worldFrame;
   std::vector<int> remap(cache.size(), -1);
-  for (size_t begin = 0; begin < pts.size(); begin += kChunk) {
-    const size_t count = std::min(kChunk, pts.size() - begin);
+  // Interpolates the points idx (all in one frame mode) into lambda[(slot)·K...] at their
+  // position in the chunk.
+  auto interpolate = [&](size_t begin, const std::vector<uint32_t>& idx, bool world, std::vector<float>& lambda) {
+    if (idx.empty()) return;
     InterpolateBatch ib;
     ib.order = key.order;
     ib.worldFrame = world;
     ib.gradients = params_.gradients;
-    ib.points = static_cast<int>(count);
-    ib.pointFrames.resize(9 * count);
-    ib.offsets.resize(count + 1, 0);
+    ib.points = static_cast<int>(idx.size());
+    ib.pointFrames.resize(9 * idx.size());
+    ib.offsets.resize(idx.size() + 1, 0);
     std::vector<uint32_t> used;
-    for (size_t j = 0; j < count; ++j) {
-      const Lookup& lk = lookups[begin + j];
-      frameRows(pts[begin + j].frame, &ib.pointFrames[9 * j]);
+    for (size_t j = 0; j < idx.size(); ++j) {
+      const Lookup& lk = lookups[begin + idx[j]];
+      frameRows(pts[begin + idx[j]].frame, &ib.pointFrames[9 * j]);
       for (RcContribution c : lk.entries) {
         int& slot = remap[static_cast<size_t>(c.record)];
         if (slot < 0) {
@@ -451,10 +452,41 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
       if (!world) frameRows(cache.info(used[r]).frame, &ib.recordFrames[9 * r]);
       remap[used[r]] = -1;
     }
-    std::vector<float> lambda;
+    std::vector<float> part;
     const auto t0 = Clock::now();
-    ctx_.backend->interpolate(ib, lambda);
+    ctx_.backend->interpolate(ib, part);
     stats_.interpolation_s += since(t0);
+    for (size_t j = 0; j < idx.size(); ++j)
+      std::copy(part.begin() + K * j, part.begin() + K * (j + 1), lambda.begin() + K * idx[j]);
+  };
+  for (size_t begin = 0; begin < pts.size(); begin += kChunk) {
+    const size_t count = std::min(kChunk, pts.size() - begin);
+    std::vector<uint32_t> worldIdx, recordIdx;
+    for (size_t j = 0; j < count; ++j) {
+      bool record = !params_.worldFrame;
+      if (params_.autoFrame) {
+        // Every record seen from p's frame is a pure z-rotation (same tangent plane, e.g. all
+        // of a flat wall): the per-record path then costs at most an O(n²) z-rotation per
+        // record (none for identical frames), the world path a full O(n³) rotation per point.
+        // Both give the same Λ to float precision (DESIGN §3); the test mirrors the kernels'
+        // z-rotation fast path (tilt² ≤ 1e-14).
+        const Frame& f = pts[begin + j].frame;
+        record = true;
+        for (const RcContribution& c : lookups[begin + j].entries) {
+          const Vec3 nr = cache.info(static_cast<uint32_t>(c.record)).frame.n;
+          const float st = glm::dot(f.t, nr), sb = glm::dot(f.b, nr);
+          if (!(st * st + sb * sb <= 1e-14f && glm::dot(f.n, nr) > 0.0f)) {
+            record = false;
+            break;
+          }
+        }
+      }
+      (record ? recordIdx : worldIdx).push_back(static_cast<uint32_t>(j));
+    }
+    stats_.recordFrameLookups += recordIdx.size();
+    std::vector<float> lambda(K * count, 0.0f);
+    interpolate(begin, worldIdx, true, lambda);
+    interpolate(begin, recordIdx, false, lambda);
     shadeLambda(pts, begin, count, key.order, lambda, out, nullptr);
   }
 }

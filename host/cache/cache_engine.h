@@ -41,6 +41,7 @@ struct CacheKey {
 
 struct EngineStats {
   std::atomic<uint64_t> recordRays{0}, pathRays{0}, lookups{0}, contributions{0}, droppedSamples{0};
+  std::atomic<uint64_t> recordFrameLookups{0};  // frame=auto: lookups interpolated in record frames (no full rotation)
   std::atomic<uint64_t> adaptiveShrinks{0}, uncoveredRounds{0};
   double sampling_s = 0, projection_s = 0, interpolation_s = 0, dot_s = 0, adaptive_s = 0;
 };

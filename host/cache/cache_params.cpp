@@ -67,9 +67,10 @@ RcacheParams parseRcacheParams(const std::map<std::string, std::string>& params)
     else if (name == "batch") p.batch = toInt(name, v, 1, 1 << 16);
     else if (name == "share_pixel") p.sharePixel = toBool(name, v);
     else if (name == "frame") {
-      if (v == "world") p.worldFrame = true;
-      else if (v == "record") p.worldFrame = false;
-      else throw bad(name, v, "must be world or record");
+      if (v == "auto") p.worldFrame = p.autoFrame = true;
+      else if (v == "world") p.worldFrame = true, p.autoFrame = false;
+      else if (v == "record") p.worldFrame = p.autoFrame = false;
+      else throw bad(name, v, "must be auto, world or record");
     } else if (name == "mode") {
       if (v == "radiance") p.tlMode = false;
       else if (v == "tl") p.tlMode = true;

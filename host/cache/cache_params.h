@@ -22,7 +22,9 @@
 //                       measured on cornell_glossy 128², 64 spp: fill 2.9 → 2.3 s, relMSE
 //                       0.00061 → 0.00058 (no loss)
 //   cache_depth  2      cache levels (bounces served by caches); deeper bounces are path traced
-//   frame        world  interpolation mode: world (records stored world-aligned) | record
+//   frame        auto   interpolation mode: auto (per point: record frames where every contributing
+//                       record differs from the point's frame by a z-rotation only, as on any flat
+//                       surface, else world frame) | world (records stored world-aligned) | record
 //   mode         radiance  radiance | tl (Tabellion–Lamorlette dominant-direction approximation)
 //   batch        256    records sampled and projected together
 //   share_pixel  true   samples of one pixel on the same surface share one cache lookup
@@ -46,6 +48,7 @@ struct RcacheParams {
   int secondaryOrder = 8;
   int cacheDepth = 2;
   bool worldFrame = true;
+  bool autoFrame = true;
   bool tlMode = false;
   int batch = 256;
   bool sharePixel = true;

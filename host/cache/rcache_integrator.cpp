@@ -437,7 +437,8 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   stats.set("kernel_interpolate_s", kt.interpolate_s);
   stats.set("kernel_brdf_dot_s", kt.brdfDot_s);
   stats.setText("device", backend->deviceName());
-  stats.setText("interpolation_frame", params_.worldFrame ? "world" : "record");
+  stats.setText("interpolation_frame", params_.autoFrame ? "auto" : params_.worldFrame ? "world" : "record");
+  stats.set("lookups_record_frame", double(es.recordFrameLookups.load()));
   stats.setText("mode", params_.tlMode ? "tl (Tabellion-Lamorlette dominant direction)" : "radiance");
   stats.setJson("materials", tables.materialsJson());
   std::string skipped;

@@ -36,6 +36,18 @@ TEST(RcacheIntegrator, RecordAndWorldFrameInterpolationGiveTheSameImage) {
   const double d = maxRelDiff(a.image.pixels, b.image.pixels);
   std::printf("world vs record frame: max relative difference %.3g\n", d);
   EXPECT_LT(d, 1e-4);
+  // frame=auto (the default) mixes both per point: record frames where every contributing record
+  // lies in the point's tangent plane (most of a box), world frame elsewhere. Same image to the
+  // same precision, and it did take the record-frame path.
+  auto autoFrame = base;
+  autoFrame["frame"] = "auto";
+  auto c = test::renderScene(s, test::rcacheSettings(s, autoFrame), 2);
+  EXPECT_EQ(a.stats.get("records"), c.stats.get("records"));
+  EXPECT_GT(c.stats.get("lookups_record_frame"), 0.5 * c.stats.get("lookups"));
+  EXPECT_EQ(a.stats.get("lookups_record_frame"), 0.0);
+  const double dAuto = maxRelDiff(a.image.pixels, c.image.pixels);
+  std::printf("world vs auto frame: max relative difference %.3g\n", dAuto);
+  EXPECT_LT(dAuto, 1e-4);
 }
 
 TEST(RcacheIntegrator, DiffuseOnlySceneMakesNoGlossyRecordsOrTables) {
