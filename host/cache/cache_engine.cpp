@@ -89,7 +89,7 @@ RadianceCache& CacheEngine::cacheFor(const CacheKey& key) {
   return *it->second;
 }
 
-void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Color>& out) {
+void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Color>& out, float relaxedScale) {
   out.assign(pts.size(), Color(0.0f));
   parallelFor(pts.size(), 64, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
@@ -107,11 +107,12 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
     }
   });
   std::vector<Color> ind;
-  indirect(pts, ind);
+  indirect(pts, ind, nullptr, relaxedScale);
   for (size_t i = 0; i < pts.size(); ++i) out[i] += ind[i];
 }
 
-void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color>& out, std::vector<LookupAov>* aov) {
+void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color>& out, std::vector<LookupAov>* aov,
+                           float relaxedScale) {
   out.assign(pts.size(), Color(0.0f));
   if (aov) aov->assign(pts.size(), LookupAov{});
   std::map<CacheKey, std::vector<size_t>> groups;
@@ -128,7 +129,7 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
     std::vector<ShadePoint> sub(idx.size());
     for (size_t j = 0; j < idx.size(); ++j) sub[j] = pts[idx[j]];
     std::vector<Lookup> lookups;
-    ensureCoverage(key, sub, lookups, nullptr, false);
+    ensureCoverage(key, sub, lookups, nullptr, false, relaxedScale);
     std::vector<Color> L;
     interpolateAndShade(key, sub, lookups, L);
     RadianceCache& cache = cacheFor(key);
@@ -153,7 +154,8 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
     std::vector<ShadePoint> sub(sampled.size());
     for (size_t j = 0; j < sampled.size(); ++j) sub[j] = pts[sampled[j]];
     std::vector<Color> L;
-    continuePaths(sub, L);
+    // Paths continued below a sharp surface keep the relaxed lookups of the final pass.
+    continuePaths(sub, L, relaxedScale);
     for (size_t j = 0; j < sampled.size(); ++j) out[sampled[j]] = L[j];
   }
 }
@@ -175,7 +177,7 @@ void CacheEngine::fill(const std::vector<ShadePoint>& pts, const std::vector<flo
 }
 
 void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoint>& pts, std::vector<Lookup>& lookups,
-                                 const std::vector<float>* baseLum, bool adaptive) {
+                                 const std::vector<float>* baseLum, bool adaptive, float relaxedScale) {
   RadianceCache& cache = cacheFor(key);
   const size_t n = pts.size();
   lookups.assign(n, Lookup{});
@@ -193,7 +195,12 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
     parallelFor(todo.size(), 64, [&](size_t b, size_t e) {
       for (size_t j = b; j < e; ++j) {
         const ShadePoint& sp = pts[todo[j]];
-        cache.lookup(sp.hit.p, sp.frame.n, lookups[todo[j]]);
+        Lookup& lk = lookups[todo[j]];
+        cache.lookup(sp.hit.p, sp.frame.n, lk);
+        if (!lk.covered() && relaxedScale > 1.0f) {
+          cache.lookup(sp.hit.p, sp.frame.n, lk, relaxedScale);
+          if (lk.covered()) ++stats_.relaxedLookups;
+        }
       }
     });
     std::vector<size_t> uncovered;
@@ -651,7 +658,7 @@ bool CacheEngine::adaptiveCheck(const CacheKey& key, const std::vector<ShadePoin
   return changed;
 }
 
-void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<Color>& out) {
+void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<Color>& out, float relaxedScale) {
   const size_t n = pts.size();
   out.assign(n, Color(0.0f));
   std::vector<Ray> rays(n);
@@ -696,7 +703,7 @@ void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<
     next[j].pixel = sp.pixel;
   }
   std::vector<Color> L;
-  radianceOut(next, L);
+  radianceOut(next, L, relaxedScale);
   for (size_t j = 0; j < live.size(); ++j) out[live[j]] = weight[live[j]] * L[j];
 }
 

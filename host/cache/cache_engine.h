@@ -41,7 +41,8 @@ struct CacheKey {
 
 struct EngineStats {
   std::atomic<uint64_t> recordRays{0}, pathRays{0}, lookups{0}, contributions{0}, droppedSamples{0};
-  std::atomic<uint64_t> recordFrameLookups{0};  // frame=auto: lookups interpolated in record frames (no full rotation)
+  std::atomic<uint64_t> recordFrameLookups{0};
+  std::atomic<uint64_t> relaxedLookups{0};  // final-pass points covered only at the relaxed radius  // frame=auto: lookups interpolated in record frames (no full rotation)
   std::atomic<uint64_t> adaptiveShrinks{0}, uncoveredRounds{0};
   double sampling_s = 0, projection_s = 0, interpolation_s = 0, dot_s = 0, adaptive_s = 0;
 };
@@ -58,9 +59,12 @@ class CacheEngine {
               const CameraModel& camera, int maxDepth, int rrDepth, Vec3 sceneLo, Vec3 sceneHi);
 
   // L_o(p, ω_o) without p's own emission. out.size() == points.size().
-  void radianceOut(const std::vector<ShadePoint>& points, std::vector<Color>& out);
+  void radianceOut(const std::vector<ShadePoint>& points, std::vector<Color>& out, float relaxedScale = 1.0f);
   // Indirect part only; `aov` (optional, same size) receives lookup details.
-  void indirect(const std::vector<ShadePoint>& points, std::vector<Color>& out, std::vector<LookupAov>* aov = nullptr);
+  // relaxedScale > 1 (the final pass): a point no record covers at a_i may use the records that
+  // cover it at relaxedScale·a_i before a new record is made for it.
+  void indirect(const std::vector<ShadePoint>& points, std::vector<Color>& out, std::vector<LookupAov>* aov = nullptr,
+                float relaxedScale = 1.0f);
   // Fill pass at level 0: make the caches cover `points`; with adaptive caching, `baseLum`
   // (luminance of the points' direct light + emission) scales the Weber threshold.
   void fill(const std::vector<ShadePoint>& points, const std::vector<float>& baseLum, bool adaptive);
@@ -93,13 +97,13 @@ class CacheEngine {
   uint64_t recordCounter_ = 0;
 
   void ensureCoverage(const CacheKey& key, const std::vector<ShadePoint>& pts, std::vector<Lookup>& lookups,
-                      const std::vector<float>* baseLum, bool adaptive);
+                      const std::vector<float>* baseLum, bool adaptive, float relaxedScale = 1.0f);
   void buildRecords(const CacheKey& key, const std::vector<ShadePoint>& cands);
   void interpolateAndShade(const CacheKey& key, const std::vector<ShadePoint>& pts, const std::vector<Lookup>& lookups,
                            std::vector<Color>& out);
   bool adaptiveCheck(const CacheKey& key, const std::vector<ShadePoint>& pts, const std::vector<Lookup>& lookups,
                      const std::vector<float>& baseLum);
-  void continuePaths(const std::vector<ShadePoint>& pts, std::vector<Color>& out);
+  void continuePaths(const std::vector<ShadePoint>& pts, std::vector<Color>& out, float relaxedScale);
   void shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, size_t count, int order,
                    const std::vector<float>& lambda, std::vector<Color>& out, const std::vector<size_t>* outIndex);
 };

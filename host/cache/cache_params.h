@@ -28,7 +28,6 @@
 //   mode         radiance  radiance | tl (Tabellion–Lamorlette dominant-direction approximation)
 //   batch        256    records sampled and projected together
 //   share_pixel  true   samples of one pixel on the same surface share one cache lookup
-//   final_pass   true   false: stop after the cache fill (image = fill-pass estimate)
 #include <map>
 #include <string>
 

@@ -47,8 +47,9 @@ class RadianceCache {
                   const std::vector<float>& gradTWorld, const std::vector<float>& gradBWorld,
                   bool clampNeighbours = true);
 
-  // Contributions at (p, n): every record with w_i > 1/a_i that is not in front of p.
-  void lookup(const Vec3& p, const Vec3& n, Lookup& out) const;
+  // Contributions at (p, n): every record with w_i > 1/a_i that is not in front of p. With
+  // scale > 1 (relaxed lookup), records count as if their a_i were scale·a_i.
+  void lookup(const Vec3& p, const Vec3& n, Lookup& out, float scale = 1.0f) const;
   // Brute-force version of lookup (tests, and a cross-check of the octree).
   void lookupBruteForce(const Vec3& p, const Vec3& n, Lookup& out) const;
 
@@ -77,7 +78,8 @@ class RadianceCache {
   std::vector<float> lambdaW_, gradTW_, gradBW_;        // world frame (world-frame mode only)
   bool hasWorld_ = false;
   RecordOctree octree_;
-  void lookupLocked(const Vec3& p, const Vec3& n, Lookup& out, bool brute) const;
+  float maxReach_ = 0.0f;  // largest a_i·R_i ever inserted (bounds relaxed queries)
+  void lookupLocked(const Vec3& p, const Vec3& n, Lookup& out, bool brute, float scale = 1.0f) const;
 };
 
 }  // namespace rc

@@ -30,6 +30,12 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 constexpr int kFillStrides[] = {16, 8, 4, 2, 1};
 // Points per engine call in the image passes: bounds memory and gives progress/cancel points.
 constexpr size_t kPointsPerCall = 8192;
+// Final pass: a jittered sample that no record covers (the fill covered pixel centres) first
+// tries the records covering it at twice their radius, before a record is made for it (which
+// means shading earlier bands again). A sample is at most 0.71 px from its pixel's centre and
+// records reach at least r_min = 1.5 px, so on flat surfaces the relaxed lookup nearly always
+// succeeds; the interpolation weights are the same formula with a doubled a.
+constexpr float kFinalRelaxedScale = 2.0f;
 
 void sceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
   lo = Vec3(INFINITY);
@@ -231,13 +237,12 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     for (auto& [k, c] : engine.caches()) n += c->size();
     return n;
   };
-  std::vector<ShadePoint> coverPoints;  // cached points looked up by the coverage pre-pass
-  auto renderBand = [&](int band, bool coverOnly) {
+  auto renderBand = [&](int band) {
     const int y0 = band * rowsPerBand, y1 = std::min(H, y0 + rowsPerBand);
     const size_t pixels = static_cast<size_t>(y1 - y0) * W, n = pixels * static_cast<size_t>(spp);
     std::vector<Primary> prim(n);
     std::vector<int> pix(n);
-    std::vector<Color> direct(coverOnly ? 0 : n, Color(0.0f));
+    std::vector<Color> direct(n, Color(0.0f));
     // Cached indirect light is smooth (the cache itself interpolates over ≥ r_min pixels), so
     // the samples of one pixel that land on the same surface share one lookup at the first of
     // them; direct light, emission and importance-sampled (sharp) materials stay per sample, so
@@ -270,7 +275,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
             else if (hit.emitter >= 0) p.Le = emitted(scene, hit, -ray.d);
           }
           const ShadePoint& sp = p.sp;
-          if (!coverOnly && sp.active && !(maxDepth >= 0 && 2 > maxDepth)) {
+          if (sp.active && !(maxDepth >= 0 && 2 > maxDepth)) {
             Rng rng(sp.seed, 1);
             direct[i] = directLight(ctx, sp.hit, sp.frame, sp.wo, *scene.bsdfs[sp.hit.bsdf], rng);
           }
@@ -305,15 +310,9 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
         slot[i] = repPts.size();
         repPts.push_back(prim[i].sp);
       }
-    if (coverOnly) {
-      engine.fill(repPts, {}, false);
-      for (const ShadePoint& sp : repPts)
-        if (engine.technique(sp) == 1) coverPoints.push_back(sp);
-      return;
-    }
     std::vector<Color> repInd;
     std::vector<LookupAov> repAov;
-    engine.indirect(repPts, repInd, &repAov);
+    engine.indirect(repPts, repInd, &repAov, kFinalRelaxedScale);
     auto tile = std::make_unique<TileFilm>(film.makeTile(0, y0, W, y1));
     for (size_t i = 0; i < n; ++i) {
       const ShadePoint& sp = prim[i].sp;
@@ -338,45 +337,27 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     }
     bandFilms[static_cast<size_t>(band)] = std::move(tile);
   };
-  // Coverage pre-pass: the fill passes looked up pixel centres, the final pass uses jittered
-  // samples, some of which are not covered yet. Creating those records first (camera rays and
-  // lookups only) means the shading pass below rarely creates any, so it rarely has to shade
-  // earlier bands again (before this, about the whole final pass was shaded twice).
-  for (int band = 0; band < bands && !interrupted; ++band) {
-    if (cancelled()) {
-      interrupted = true;
-      break;
-    }
-    renderBand(band, true);
-    if (ctx.progress) ctx.progress("final-pass coverage", double(band + 1), double(bands));
-  }
-  // Records created for later bands clamp their neighbours' radii, which can uncover points of
-  // earlier bands; one more coverage round over all the cached points of the pre-pass (kept,
-  // ~2 per pixel) settles that, so the shading pass finds its level-0 lookups covered. (Without
-  // it, 24 of 32 bands were shaded twice on the 128² Cornell box at 16 spp.)
-  if (!interrupted && !coverPoints.empty()) engine.fill(coverPoints, {}, false);
-  coverPoints.clear();
-  coverPoints.shrink_to_fit();
-  int lastCreating = -1;
-  for (int band = 0; band < bands && !interrupted; ++band) {
-    if (cancelled()) {
-      interrupted = true;
-      break;
-    }
-    const size_t before = totalRecords();
-    renderBand(band, false);
-    if (totalRecords() != before) lastCreating = band;
-    if (ctx.progress) ctx.progress("render", double(band + 1), double(bands));
-  }
-  // Reshading cannot create records: the caches only grew since, and every point it reaches was
-  // covered then (same seeds, same paths).
+  // A band shaded before records were created elsewhere may have missed them; it is shaded again
+  // until every band saw the final caches (usually one extra round over the bands up to the last
+  // one that created records, often none). Rounds are capped: records only grow and a reshaded
+  // band finds its points covered, so a third round has not been seen; the cap only bounds time.
+  std::vector<size_t> shadedWith(static_cast<size_t>(bands), 0);  // record count when last shaded
   int reshaded = 0;
-  for (int band = 0; band < lastCreating && !interrupted; ++band, ++reshaded) {
-    if (cancelled()) {
-      interrupted = true;
-      break;
+  for (int round = 0; round < 4 && !interrupted; ++round) {
+    bool any = false;
+    for (int band = 0; band < bands && !interrupted; ++band) {
+      if (round > 0 && shadedWith[static_cast<size_t>(band)] == totalRecords()) continue;
+      if (cancelled()) {
+        interrupted = true;
+        break;
+      }
+      renderBand(band);
+      shadedWith[static_cast<size_t>(band)] = totalRecords();
+      if (round > 0) ++reshaded;
+      any = true;
+      if (ctx.progress && round == 0) ctx.progress("render", double(band + 1), double(bands));
     }
-    renderBand(band, false);
+    if (!any) break;
   }
   for (auto& t : bandFilms)
     if (t) film.merge(*t);
@@ -452,6 +433,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   stats.setText("device", backend->deviceName());
   stats.setText("interpolation_frame", params_.autoFrame ? "auto" : params_.worldFrame ? "world" : "record");
   stats.set("lookups_record_frame", double(es.recordFrameLookups.load()));
+  stats.set("lookups_relaxed", double(es.relaxedLookups.load()));
   stats.setText("mode", params_.tlMode ? "tl (Tabellion-Lamorlette dominant direction)" : "radiance");
   stats.setJson("materials", tables.materialsJson());
   std::string skipped;
