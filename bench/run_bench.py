@@ -27,14 +27,15 @@ RCACHE = os.path.join(ROOT, "build", "rcache")
 # and the materials rcache path traces (too sharp for the cache).
 SCENES = ["cornell_glossy", "glossy_sweep", "aniso_sphere", "curved_glossy", "cornell_diffuse"]
 FULL = dict(res=512, ref_spp=4096, path_spp=[4, 8, 16, 32, 64, 128, 256],
-            rcache=[(dict(), 4), (dict(), 16), (dict(), 64), (dict(rays=512, a=0.5), 16), (dict(rays=512, a=0.5), 64),
-                    (dict(rays=2048, a=0.2), 64)],
-            variants=[("adaptive=false", {"adaptive": "false"}), ("gradients=false", {"gradients": "false"}),
+            rcache=[(dict(), 4), (dict(), 16), (dict(), 64), (dict(), 256), (dict(rays=256, a=0.5), 16),
+                    (dict(rays=256, a=0.5), 64), (dict(rays=1024, a=0.3), 64)],
+            variants=[("adaptive=true", {"adaptive": "true"}), ("gradients=false", {"gradients": "false"}),
                       ("frame=world", {"frame": "world"}), ("mode=tl", {"mode": "tl"})],
             variant_spp=16)
 QUICK = dict(res=96, ref_spp=512, path_spp=[1, 4, 16, 64],
-             rcache=[(dict(), 2), (dict(), 8), (dict(), 32), (dict(rays=256, a=0.6), 8), (dict(rays=2048, a=0.2), 32)],
-             variants=[("adaptive=false", {"adaptive": "false"}), ("frame=world", {"frame": "world"}),
+             rcache=[(dict(), 2), (dict(), 8), (dict(), 32), (dict(rays=256, a=0.5), 8), (dict(rays=256, a=0.5), 32),
+                     (dict(rays=1024, a=0.3), 32)],
+             variants=[("adaptive=true", {"adaptive": "true"}), ("frame=world", {"frame": "world"}),
                        ("mode=tl", {"mode": "tl"})],
              variant_spp=8)
 

@@ -2,11 +2,15 @@
 // Parameters of the rcache integrator, read from <integrator type="rcache"> (IntegratorSettings::
 // params; -D name=value overrides arrive there too). Defaults are chosen from the literature, not
 // from the shipped scenes:
-//   a            0.3    accuracy of primary-hit caches (Ward's a; Křivánek 2005 uses 0.1–0.5)
-//   rays         1024   hemisphere rays per record (M×N, N = 4M; the notes use 500–8000)
+//   a            0.4    accuracy of primary-hit caches (Ward's a; Křivánek 2005 uses 0.1–0.5)
+//   rays         512    hemisphere rays per record (M×N, N = 4M; the notes use 500–8000)
 //   order        0      SH order override for glossy records (0 = the per-material order from brdf)
 //   weber        0.025  adaptive caching threshold: relative luminance difference (Weber law, 2–3 %)
-//   adaptive     true   shrink a_i where overlapping records disagree (EGSR 2006)
+//   adaptive     false  shrink a_i where overlapping records disagree (EGSR 2006). Off by default:
+//                       with a few hundred rays per record the 2.5 % Weber test mostly fires on
+//                       the records' own noise (27 k shrinks on the 512² Cornell box), doubling
+//                       the records and the fill time for no lower error at equal time
+//                       (bench/RESULTS.md "Defaults"); on with adaptive=true.
 //   min_a_scale  0.125  adaptive caching never shrinks a_i below a·min_a_scale
 //   gradients    true   translational gradients in records and interpolation
 //   rmin, rmax   1.5, 10  bounds of a record's influence radius a·R_i, in pixel footprints at the
@@ -34,11 +38,11 @@
 namespace rc {
 
 struct RcacheParams {
-  float a = 0.3f;
-  int rays = 1024;
+  float a = 0.4f;
+  int rays = 512;
   int order = 0;
   float weber = 0.025f;
-  bool adaptive = true;
+  bool adaptive = false;
   float minAScale = 0.125f;
   bool gradients = true;
   float rMinPx = 1.5f, rMaxPx = 10.0f;

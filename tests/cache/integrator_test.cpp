@@ -92,7 +92,7 @@ TEST(RcacheIntegrator, AdaptiveCachingRefinesSharperFloorsMore) {
   // off) would give nearly the same count; adaptive caching adds records where the sharper lobe
   // makes neighbouring records disagree (Křivánek et al. 2006, glossy-floor figure).
   Scene sharp = test::boxScene(0.12f, 48, 36), rough = test::boxScene(0.6f, 48, 36);
-  const std::map<std::string, std::string> p = {{"order", "10"}};
+  const std::map<std::string, std::string> p = {{"order", "10"}, {"adaptive", "true"}};
   auto rs = test::renderScene(sharp, test::rcacheSettings(sharp, p), 1);
   auto rr = test::renderScene(rough, test::rcacheSettings(rough, p), 1);
   const double gs = rs.stats.get("records_glossy"), gr = rr.stats.get("records_glossy");
