@@ -32,6 +32,11 @@
 //   mode         radiance  radiance | tl (Tabellion–Lamorlette dominant-direction approximation)
 //   batch        256    records sampled and projected together
 //   share_pixel  true   samples of one pixel on the same surface share one cache lookup
+//   light_samples 1     light samples per pixel sample for the direct light of the final pass
+//                       (one BSDF sample beside them, MIS-weighted for the count). Measured on the
+//                       256² Cornell box, 16 spp, loaded cache: relMSE 0.00127 / 0.00102 / 0.00089
+//                       for 1 / 2 / 4 with 2.8 / 3.6 / 5.1 M rays — about what more spp would buy,
+//                       so 1 by default
 #include <map>
 #include <string>
 
@@ -55,6 +60,7 @@ struct RcacheParams {
   bool tlMode = false;
   int batch = 256;
   bool sharePixel = true;
+  int lightSamples = 1;
 };
 
 // Throws rc::Error("rcache parameter 'x': ...") for an unknown name or a malformed value.

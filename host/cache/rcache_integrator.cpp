@@ -290,7 +290,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
           const ShadePoint& sp = p.sp;
           if (sp.active && !(maxDepth >= 0 && 2 > maxDepth)) {
             Rng rng(sp.seed, 1);
-            direct[i] = directLight(ctx, sp.hit, sp.frame, sp.wo, *scene.bsdfs[sp.hit.bsdf], rng);
+            direct[i] = directLight(ctx, sp.hit, sp.frame, sp.wo, *scene.bsdfs[sp.hit.bsdf], rng, params_.lightSamples);
           }
           rep[i] = static_cast<uint32_t>(i);
           const bool cached = sp.active && engine.technique(sp) == 1;

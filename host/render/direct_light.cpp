@@ -23,6 +23,11 @@ bool visible(const Accel& accel, const Hit& hit, const LightSample& ls) {
 
 Color sampleLightMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
                      const Bsdf& bsdf, Rng& rng) {
+  return sampleLightMisN(ctx, hit, frame, woLocal, bsdf, rng, 1);
+}
+
+Color sampleLightMisN(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                      const Bsdf& bsdf, Rng& rng, int lightSamples) {
   // Always draw the same three numbers so the stream stays aligned whatever happens below.
   const float uLight = rng.nextFloat();
   const Vec2 u(rng.nextFloat(), rng.nextFloat());
@@ -33,7 +38,10 @@ Color sampleLightMis(const RenderContext& ctx, const Hit& hit, const Frame& fram
   const Color f = bsdf.eval(woLocal, wiLocal);
   if (maxComponent(f) <= 0.0f || maxComponent(ls->radiance) <= 0.0f) return Color(0.0f);
   if (!visible(ctx.accel, hit, *ls)) return Color(0.0f);
-  const float weight = ls->delta ? 1.0f : powerHeuristic(ls->pdf, bsdf.pdf(woLocal, wiLocal));
+  // With n light samples per BSDF sample the power heuristic weighs n·pdf_light against pdf_bsdf
+  // (Veach's multi-sample MIS); n = 1 is the usual one-sample estimator.
+  const float n = static_cast<float>(lightSamples);
+  const float weight = ls->delta ? 1.0f : powerHeuristic(n * ls->pdf, bsdf.pdf(woLocal, wiLocal));
   return f * ls->radiance * weight;
 }
 
@@ -51,23 +59,26 @@ Color directLightLightOnly(const RenderContext& ctx, const Hit& hit, const Frame
 }
 
 Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorld, const Hit& next, float bsdfPdf,
-                 bool delta) {
+                 bool delta, int lightSamples) {
+  const float n = static_cast<float>(lightSamples);
   if (next.valid()) {
     const Color Le = emitted(ctx.scene, next, -dirWorld);
     if (maxComponent(Le) <= 0.0f) return Color(0.0f);
     if (delta) return Le;
-    return Le * powerHeuristic(bsdfPdf, ctx.lights.pdf(next, from));
+    return Le * powerHeuristic(bsdfPdf, n * ctx.lights.pdf(next, from));
   }
   if (!ctx.lights.hasEnvironment()) return Color(0.0f);
   const Color Le = ctx.lights.environment(dirWorld);
   if (maxComponent(Le) <= 0.0f) return Color(0.0f);
   if (delta) return Le;
-  return Le * powerHeuristic(bsdfPdf, ctx.lights.environmentPdf(dirWorld));
+  return Le * powerHeuristic(bsdfPdf, n * ctx.lights.environmentPdf(dirWorld));
 }
 
 Color directLight(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal, const Bsdf& bsdf,
-                  Rng& rng) {
-  Color L = sampleLightMis(ctx, hit, frame, woLocal, bsdf, rng);
+                  Rng& rng, int lightSamples) {
+  Color L(0.0f);
+  for (int k = 0; k < lightSamples; ++k) L += sampleLightMisN(ctx, hit, frame, woLocal, bsdf, rng, lightSamples);
+  if (lightSamples > 1) L /= static_cast<float>(lightSamples);
   const float uLobe = rng.nextFloat();
   const Vec2 u(rng.nextFloat(), rng.nextFloat());
   if (ctx.lights.empty()) return L;
@@ -75,7 +86,7 @@ Color directLight(const RenderContext& ctx, const Hit& hit, const Frame& frame, 
   if (!bs || maxComponent(bs->weight) <= 0.0f) return L;
   const Vec3 dir = frame.toWorld(bs->wi);
   const Hit next = ctx.accel.intersect(Accel::spawnRay(hit, dir));
-  L += bs->weight * emitterMis(ctx, hit.p, dir, next, bs->pdf, (bs->lobe & kLobeDelta) != 0);
+  L += bs->weight * emitterMis(ctx, hit.p, dir, next, bs->pdf, (bs->lobe & kLobeDelta) != 0, lightSamples);
   return L;
 }
 

@@ -34,17 +34,23 @@ inline float powerHeuristic(float pdfA, float pdfB) {
 // Light-sampling strategy at `hit`: one light sample, one shadow ray. Consumes 3 random numbers.
 Color sampleLightMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
                      const Bsdf& bsdf, Rng& rng);
+// The same, as one of `lightSamples` light samples taken beside one BSDF sample (MIS weight
+// against lightSamples·pdf_light; the caller averages the light samples).
+Color sampleLightMisN(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                      const Bsdf& bsdf, Rng& rng, int lightSamples);
 
 // BSDF-sampling strategy's contribution once the sampled ray (from `from`, world direction `dirWorld`)
 // found `next` (next.valid() false = escaped to the environment). `bsdfPdf` is the continuous pdf of
 // the sample (ignored when `delta`). Returns the MIS-weighted emitted radiance (not multiplied by
 // the sample's weight).
 Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorld, const Hit& next,
-                 float bsdfPdf, bool delta);
+                 float bsdfPdf, bool delta, int lightSamples = 1);
 
-// Full direct light: sampleLightMis + one BSDF sample traced here + emitterMis. Consumes 6 numbers.
+// Full direct light: `lightSamples` light samples (averaged) + one BSDF sample traced here +
+// emitterMis, all MIS-weighted for that sample count. Consumes 3·lightSamples + 3 numbers; with one
+// light sample it is exactly the path tracer's per-vertex estimator.
 Color directLight(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
-                  const Bsdf& bsdf, Rng& rng);
+                  const Bsdf& bsdf, Rng& rng, int lightSamples = 1);
 
 // Direct light by light sampling alone (weight 1, one shadow ray, no BSDF ray): unbiased whenever
 // the light sampler reaches every emitter with a non-zero pdf where it emits, which holds for all

@@ -123,11 +123,15 @@ TEST(DirectLight, MisMatchesPureBsdfSampling) {
     const Bsdf& bsdf = *w.scene.bsdfs[hit.bsdf];
     const Frame frame = hit.frame();
     const Vec3 wo = frame.toLocal(-down.d);
-    Stat mis, pure, lightOnly;
+    Stat mis, pure, lightOnly, mis4, lightOnlyFn;
     const int n = 60000;
     for (int i = 0; i < n; ++i) {
       Rng rng(hashMix(3, i));
       mis.add(directLight(ctx, hit, frame, wo, bsdf, rng));
+      Rng rng4(hashMix(4, i));
+      mis4.add(directLight(ctx, hit, frame, wo, bsdf, rng4, 4));
+      Rng rngL(hashMix(5, i));
+      lightOnlyFn.add(directLightLightOnly(ctx, hit, frame, wo, bsdf, rngL));
       const auto bs = bsdf.sample(wo, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
       Color L(0.0f);
       if (bs) {
@@ -149,6 +153,13 @@ TEST(DirectLight, MisMatchesPureBsdfSampling) {
       EXPECT_NEAR(mis.mean[k], lightOnly.mean[k], 5 * sigmaL) << "bsdf " << which << " channel " << k;
       // The point of MIS: lower variance than BSDF sampling alone on these small bright lights.
       EXPECT_LT(mis.stderr_(k), pure.stderr_(k)) << "bsdf " << which;
+      // Four light samples beside one BSDF sample (weights against 4·pdf_light): same mean, less
+      // variance; directLightLightOnly is the light-only estimator above as a function.
+      const double sigma4 = std::sqrt(mis4.stderr_(k) * mis4.stderr_(k) + pure.stderr_(k) * pure.stderr_(k));
+      EXPECT_NEAR(mis4.mean[k], pure.mean[k], 5 * sigma4) << "bsdf " << which << " channel " << k;
+      EXPECT_LT(mis4.stderr_(k), mis.stderr_(k)) << "bsdf " << which;
+      const double sigmaF = std::sqrt(lightOnlyFn.stderr_(k) * lightOnlyFn.stderr_(k) + pure.stderr_(k) * pure.stderr_(k));
+      EXPECT_NEAR(lightOnlyFn.mean[k], pure.mean[k], 5 * sigmaF) << "bsdf " << which << " channel " << k;
     }
     EXPECT_GT(mis.mean[0], 0.01);
   }
