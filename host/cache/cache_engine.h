@@ -98,7 +98,8 @@ class CacheEngine {
 
   void ensureCoverage(const CacheKey& key, const std::vector<ShadePoint>& pts, std::vector<Lookup>& lookups,
                       const std::vector<float>* baseLum, bool adaptive, float relaxedScale = 1.0f);
-  void buildRecords(const CacheKey& key, const std::vector<ShadePoint>& cands);
+  // Returns the ids of older records whose radius the new ones' neighbour clamping lowered.
+  std::vector<uint32_t> buildRecords(const CacheKey& key, const std::vector<ShadePoint>& cands);
   void interpolateAndShade(const CacheKey& key, const std::vector<ShadePoint>& pts, const std::vector<Lookup>& lookups,
                            std::vector<Color>& out);
   bool adaptiveCheck(const CacheKey& key, const std::vector<ShadePoint>& pts, const std::vector<Lookup>& lookups,

@@ -19,7 +19,8 @@ size_t RadianceCache::size() const {
 uint32_t RadianceCache::insert(std::vector<RecordInfo> infos, const std::vector<float>& lambda,
                                const std::vector<float>& gradT, const std::vector<float>& gradB,
                                const std::vector<float>& lambdaWorld, const std::vector<float>& gradTWorld,
-                               const std::vector<float>& gradBWorld, bool clampNeighbours) {
+                               const std::vector<float>& gradBWorld, bool clampNeighbours,
+                               std::vector<uint32_t>* shrunk) {
   const size_t k = static_cast<size_t>(coeffsPerRecord());
   const size_t n = infos.size();
   if (lambda.size() != n * k || gradT.size() != n * k || gradB.size() != n * k)
@@ -56,8 +57,12 @@ uint32_t RadianceCache::insert(std::vector<RecordInfo> infos, const std::vector<
     for (uint32_t id : clampWith) {
       RecordInfo& q = infos_[id];
       float rNew = r.R;
+      const float before = q.R;
       clampNeighbourRadii(r.p, rNew, q.p, q.R);
-      spheres_[id] = influenceSphere(q);
+      if (q.R < before) {
+        spheres_[id] = influenceSphere(q);
+        if (shrunk) shrunk->push_back(id);
+      }
     }
     const uint32_t id = static_cast<uint32_t>(infos_.size());
     infos_.push_back(r);

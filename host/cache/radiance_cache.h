@@ -41,11 +41,12 @@ class RadianceCache {
 
   // Adds records (coefficients in record frame, [3][n2] each; world copies optional = empty)
   // with neighbour clamping of R against records already present and among themselves.
-  // Returns the index of the first new record.
+  // Returns the index of the first new record; `shrunk` (optional) receives the ids of records
+  // whose R the clamping lowered (possibly repeated).
   uint32_t insert(std::vector<RecordInfo> infos, const std::vector<float>& lambda, const std::vector<float>& gradT,
                   const std::vector<float>& gradB, const std::vector<float>& lambdaWorld,
                   const std::vector<float>& gradTWorld, const std::vector<float>& gradBWorld,
-                  bool clampNeighbours = true);
+                  bool clampNeighbours = true, std::vector<uint32_t>* shrunk = nullptr);
 
   // Contributions at (p, n): every record with w_i > 1/a_i that is not in front of p. With
   // scale > 1 (relaxed lookup), records count as if their a_i were scale·a_i.
