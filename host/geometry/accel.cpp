@@ -93,12 +93,45 @@ RTCRay toEmbree(const Ray& r) {
   return e;
 }
 
+// Per-triangle constants of a mesh, computed once when the BVH is built (they were computed per
+// hit: the cross product, normalisation and tangent solve made triangleHit 13 % of a render).
+struct TriangleConstants {
+  std::vector<Vec3> faceNormal;  // orientedFaceNormal
+  std::vector<Vec3> dpdu;        // from the uvs, zero when the mesh has none or the map is degenerate
+};
+
+Vec3 triangleDpdu(const Mesh& mesh, const glm::uvec3& tri) {
+  if (mesh.uvs.empty()) return Vec3(0.0f);
+  const Vec3 &p0 = mesh.positions[tri.x], &p1 = mesh.positions[tri.y], &p2 = mesh.positions[tri.z];
+  const Vec2 &t0 = mesh.uvs[tri.x], &t1 = mesh.uvs[tri.y], &t2 = mesh.uvs[tri.z];
+  const Vec2 duv02 = t0 - t2, duv12 = t1 - t2;
+  const Vec3 dp02 = p0 - p2, dp12 = p1 - p2;
+  const float det = duv02.x * duv12.y - duv02.y * duv12.x;
+  if (std::fabs(det) > 1e-12f) {
+    const Vec3 dpdu = (duv12.y * dp02 - duv02.y * dp12) / det;
+    if (std::isfinite(dpdu.x) && std::isfinite(dpdu.y) && std::isfinite(dpdu.z)) return dpdu;
+  }
+  return Vec3(0.0f);
+}
+
+TriangleConstants triangleConstants(const Mesh& mesh) {
+  TriangleConstants c;
+  c.faceNormal.resize(mesh.triangles.size());
+  c.dpdu.resize(mesh.triangles.size());
+  for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+    c.faceNormal[i] = orientedFaceNormal(mesh, i);
+    c.dpdu[i] = triangleDpdu(mesh, mesh.triangles[i]);
+  }
+  return c;
+}
+
 }  // namespace
 
 struct Accel::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   std::vector<int> geomToMesh;  // Embree geomID → mesh index, −1 for the sphere geometry
+  std::vector<TriangleConstants> meshConstants;  // per mesh (empty for meshes not in the BVH)
   unsigned sphereGeom = RTC_INVALID_GEOMETRY_ID;
   SphereData sphereData{};
   mutable RayCounter rays;
@@ -139,6 +172,7 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
   rtcSetSceneBuildQuality(im.scene, RTC_BUILD_QUALITY_HIGH);
   im.check("building the scene BVH");
 
+  im.meshConstants.resize(scene.meshes.size());
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
     if (mesh.triangles.empty() || mesh.positions.empty()) continue;
@@ -163,6 +197,7 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
     im.check(("mesh '" + mesh.name + "'").c_str());
     if (im.geomToMesh.size() <= id) im.geomToMesh.resize(id + 1, -1);
     im.geomToMesh[id] = static_cast<int>(m);
+    im.meshConstants[m] = triangleConstants(mesh);
   }
 
   if (!scene.spheres.empty()) {
@@ -193,7 +228,8 @@ uint64_t Accel::raysTraced() const { return impl_->rays.total(); }
 
 namespace {
 
-Hit triangleHit(const Mesh& mesh, int meshIndex, unsigned prim, float u, float v, float t) {
+Hit triangleHit(const Mesh& mesh, const TriangleConstants& tc, int meshIndex, unsigned prim, float u, float v,
+                float t) {
   Hit h;
   h.t = t;
   h.mesh = meshIndex;
@@ -206,7 +242,7 @@ Hit triangleHit(const Mesh& mesh, int meshIndex, unsigned prim, float u, float v
   // From barycentrics, not o + t·d: the error is then relative to the triangle's coordinates only.
   h.p = w * p0 + u * p1 + v * p2;
   h.pError = kPointErrorUlps * kFloatEps * std::max({maxAbs(p0), maxAbs(p1), maxAbs(p2)});
-  const Vec3 ng = orientedFaceNormal(mesh, prim);
+  const Vec3 ng = tc.faceNormal[prim];
   if (!mesh.normals.empty()) {
     const Vec3 &n0 = mesh.normals[tri.x], &n1 = mesh.normals[tri.y], &n2 = mesh.normals[tri.z];
     Vec3 ns = w * n0 + u * n1 + v * n2;
@@ -221,13 +257,7 @@ Hit triangleHit(const Mesh& mesh, int meshIndex, unsigned prim, float u, float v
   if (!mesh.uvs.empty()) {
     const Vec2 &t0 = mesh.uvs[tri.x], &t1 = mesh.uvs[tri.y], &t2 = mesh.uvs[tri.z];
     h.uv = w * t0 + u * t1 + v * t2;
-    const Vec2 duv02 = t0 - t2, duv12 = t1 - t2;
-    const Vec3 dp02 = p0 - p2, dp12 = p1 - p2;
-    const float det = duv02.x * duv12.y - duv02.y * duv12.x;
-    if (std::fabs(det) > 1e-12f) {
-      const Vec3 dpdu = (duv12.y * dp02 - duv02.y * dp12) / det;
-      if (std::isfinite(dpdu.x) && std::isfinite(dpdu.y) && std::isfinite(dpdu.z)) h.dpdu = dpdu;
-    }
+    h.dpdu = tc.dpdu[prim];
   } else {
     h.uv = Vec2(u, v);
   }
@@ -273,7 +303,7 @@ Hit Accel::intersect(const Ray& ray) const {
     return sphereHit(scene_.spheres[s], s, ray, rh.ray.tfar);
   }
   const int m = impl_->geomToMesh[rh.hit.geomID];
-  return triangleHit(scene_.meshes[m], m, rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar);
+  return triangleHit(scene_.meshes[m], impl_->meshConstants[m], m, rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar);
 }
 
 bool Accel::occluded(const Ray& ray) const {

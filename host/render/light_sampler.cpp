@@ -40,6 +40,7 @@ struct Entry {
   // area on a mesh
   int mesh = -1;
   Distribution1D triangles;
+  std::vector<Vec3> normals;  // orientedFaceNormal per triangle (computed once, not per sample)
   double area = 0.0;
   // area on a sphere
   int sphere = -1;
@@ -121,6 +122,7 @@ LightSampler::LightSampler(const Scene& scene) : impl_(std::make_unique<Impl>(sc
       const glm::dvec3 p0(mesh.positions[tri.x]), p1(mesh.positions[tri.y]), p2(mesh.positions[tri.z]);
       areas[t] = 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
       e.area += areas[t];
+      e.normals.push_back(orientedFaceNormal(mesh, t));
     }
     e.triangles = Distribution1D(areas);
     if (!(e.area > 0.0)) continue;
@@ -238,7 +240,7 @@ std::optional<LightSample> LightSampler::sample(const Vec3& p, Vec2 u, float uLi
         const float su = std::sqrt(ux);
         const float b0 = 1.0f - su, b1 = u.y * su;
         const Vec3 q = b0 * mesh.positions[tri.x] + b1 * mesh.positions[tri.y] + (1.0f - b0 - b1) * mesh.positions[tri.z];
-        const Vec3 n = orientedFaceNormal(mesh, t);
+        const Vec3 n = e.normals[t];
         const Vec3 toLight = q - p;
         const float dist2 = glm::dot(toLight, toLight);
         const float cosL = std::fabs(glm::dot(n, toLight)) / std::sqrt(dist2);
