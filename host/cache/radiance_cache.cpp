@@ -125,9 +125,9 @@ void RadianceCache::lookup(const Vec3& p, const Vec3& n, Lookup& out, float scal
   lookupLocked(p, n, out, false, scale);
 }
 
-void RadianceCache::lookupBruteForce(const Vec3& p, const Vec3& n, Lookup& out) const {
+void RadianceCache::lookupBruteForce(const Vec3& p, const Vec3& n, Lookup& out, float scale) const {
   std::shared_lock lock(mutex_);
-  lookupLocked(p, n, out, true);
+  lookupLocked(p, n, out, true, scale);
 }
 
 void RadianceCache::shrinkA(uint32_t id, float newA, float aMin) {

@@ -52,7 +52,7 @@ class RadianceCache {
   // scale > 1 (relaxed lookup), records count as if their a_i were scale·a_i.
   void lookup(const Vec3& p, const Vec3& n, Lookup& out, float scale = 1.0f) const;
   // Brute-force version of lookup (tests, and a cross-check of the octree).
-  void lookupBruteForce(const Vec3& p, const Vec3& n, Lookup& out) const;
+  void lookupBruteForce(const Vec3& p, const Vec3& n, Lookup& out, float scale = 1.0f) const;
 
   // Adaptive caching: lower a_i (never below aMin).
   void shrinkA(uint32_t id, float newA, float aMin);

@@ -99,21 +99,26 @@ TEST(RecordOctree, EqualsBruteForceOnRandomRecords) {
   }
   const std::vector<float> z(3 * infos.size(), 0.0f), none;
   cache.insert(infos, z, z, z, none, none, none);
-  size_t total = 0;
+  size_t total = 0, totalRelaxed = 0;
   for (int q = 0; q < 2000; ++q) {
     const Vec3 p(rng.nextFloat() * 3.4f - 1.2f, rng.nextFloat() * 3.4f - 1.2f, rng.nextFloat() * 0.2f);
     const Vec3 n = glm::normalize(Vec3(rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f, 1.0f));
-    Lookup a, b;
-    cache.lookup(p, n, a);
-    cache.lookupBruteForce(p, n, b);
-    ASSERT_EQ(a.entries.size(), b.entries.size()) << "query " << q;
-    for (size_t i = 0; i < a.entries.size(); ++i) {
-      EXPECT_EQ(a.entries[i].record, b.entries[i].record);
-      EXPECT_EQ(a.entries[i].weight, b.entries[i].weight);
+    // scale 1: the point query (one root-to-leaf path); scale 2: the relaxed lookup of the final
+    // pass (a sphere query bounded by the largest reach). Both must equal brute force exactly.
+    for (float scale : {1.0f, 2.0f}) {
+      Lookup a, b;
+      cache.lookup(p, n, a, scale);
+      cache.lookupBruteForce(p, n, b, scale);
+      ASSERT_EQ(a.entries.size(), b.entries.size()) << "query " << q << " scale " << scale;
+      for (size_t i = 0; i < a.entries.size(); ++i) {
+        EXPECT_EQ(a.entries[i].record, b.entries[i].record);
+        EXPECT_EQ(a.entries[i].weight, b.entries[i].weight);
+      }
+      (scale == 1.0f ? total : totalRelaxed) += b.entries.size();
     }
-    total += b.entries.size();
   }
   EXPECT_GT(total, 2000u);  // the test exercises real overlaps, not empty lookups
+  EXPECT_GT(totalRelaxed, total);  // relaxed lookups reach more records
 }
 
 }  // namespace
