@@ -489,24 +489,11 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
     const size_t count = std::min(kChunk, pts.size() - begin);
     std::vector<uint32_t> worldIdx, recordIdx;
     for (size_t j = 0; j < count; ++j) {
-      bool record = !params_.worldFrame;
-      if (params_.autoFrame) {
-        // Every record seen from p's frame is a pure z-rotation (same tangent plane, e.g. all
-        // of a flat wall): the per-record path then costs at most an O(n²) z-rotation per
-        // record (none for identical frames), the world path a full O(n³) rotation per point.
-        // Both give the same Λ to float precision (DESIGN §3); the test mirrors the kernels'
-        // z-rotation fast path (tilt² ≤ 1e-14).
-        const Frame& f = pts[begin + j].frame;
-        record = true;
-        for (const RcContribution& c : lookups[begin + j].entries) {
-          const Vec3 nr = cache.info(static_cast<uint32_t>(c.record)).frame.n;
-          const float st = glm::dot(f.t, nr), sb = glm::dot(f.b, nr);
-          if (!(st * st + sb * sb <= 1e-14f && glm::dot(f.n, nr) > 0.0f)) {
-            record = false;
-            break;
-          }
-        }
-      }
+      // frame=auto: where every contributing record lies in the point's tangent plane (all of a
+      // flat wall) the per-record path costs at most an O(n²) z-rotation per record, the world
+      // path a full O(n³) rotation per point; both give the same Λ to float precision (DESIGN §3).
+      // The lookup tells (Lookup::sameNormal; contributions have n·n_i > 0).
+      const bool record = params_.autoFrame ? lookups[begin + j].sameNormal : !params_.worldFrame;
       (record ? recordIdx : worldIdx).push_back(static_cast<uint32_t>(j));
     }
     stats_.recordFrameLookups += recordIdx.size();

@@ -84,6 +84,7 @@ uint32_t RadianceCache::insert(std::vector<RecordInfo> infos, const std::vector<
 void RadianceCache::lookupLocked(const Vec3& p, const Vec3& n, Lookup& out, bool brute, float scale) const {
   out.entries.clear();
   out.weightSum = 0.0f;
+  out.sameNormal = true;
   const float scale2 = scale * scale;
   auto test = [&](uint32_t id) {
     // w_i > 1/a_i needs ‖p − p_i‖ < a_i·R_i: most octree candidates fail this on 16 bytes,
@@ -96,6 +97,8 @@ void RadianceCache::lookupLocked(const Vec3& p, const Vec3& n, Lookup& out, bool
     const float w = contributionWeight(p, n, r.p, r.frame.n, r.R, r.a * scale);
     if (w <= 0.0f) return;
     const Vec3 d = p - r.p;
+    const Vec3 tilt = glm::cross(n, r.frame.n);
+    if (!(glm::dot(tilt, tilt) <= 1e-14f)) out.sameNormal = false;
     out.entries.push_back({static_cast<rc_int>(id), w, glm::dot(d, r.frame.t), glm::dot(d, r.frame.b)});
     out.weightSum += w;
   };

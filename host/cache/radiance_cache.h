@@ -28,6 +28,9 @@ struct RecordInfo {
 struct Lookup {
   std::vector<RcContribution> entries;  // record = index into the cache, weight, dt, db
   float weightSum = 0.0f;
+  // Every contributing record's normal equals the point's (|n × n_i|² ≤ 1e-14, the kernels'
+  // z-rotation fast-path bound): the record-frame interpolation then needs no full rotation.
+  bool sameNormal = true;
   bool covered() const { return weightSum > 0.0f; }
 };
 
