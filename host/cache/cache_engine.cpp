@@ -326,8 +326,7 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& c = cands[i / S];
       const Hit& h = hits[i];
-      const bool two = h.valid() && h.bsdf >= 0 && twoSided_[static_cast<size_t>(h.bsdf)];
-      next[i] = makeShadePoint(h, rays[i].d, c.depth + 1, c.level + 1, hashMix(c.seed, i % S, 0x5EED), two);
+      next[i] = shadePointOf(h, rays[i].d, c.depth + 1, c.level + 1, hashMix(c.seed, i % S, 0x5EED));
     }
   });
   std::vector<Color> L;
@@ -703,9 +702,8 @@ void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<
   for (size_t j = 0; j < live.size(); ++j) {
     const ShadePoint& sp = pts[live[j]];
     const Hit& h = hits[j];
-    const bool two = h.valid() && h.bsdf >= 0 && twoSided_[static_cast<size_t>(h.bsdf)];
-    next[j] = makeShadePoint(h, liveRays[j].d, sp.depth + 1, sp.level + (delta[live[j]] ? 0 : 1),
-                             hashMix(sp.seed, 0xC0471), two);
+    next[j] = shadePointOf(h, liveRays[j].d, sp.depth + 1, sp.level + (delta[live[j]] ? 0 : 1),
+                           hashMix(sp.seed, 0xC0471));
     next[j].pixel = sp.pixel;
   }
   std::vector<Color> L;

@@ -69,6 +69,11 @@ class CacheEngine {
   // (luminance of the points' direct light + emission) scales the Weber threshold.
   void fill(const std::vector<ShadePoint>& points, const std::vector<float>& baseLum, bool adaptive);
 
+  // makeShadePoint with the BSDF's two-sidedness looked up once per material.
+  ShadePoint shadePointOf(const Hit& hit, const Vec3& dir, int depth, int level, uint64_t seed) const {
+    const bool two = hit.valid() && hit.bsdf >= 0 && twoSided_[static_cast<size_t>(hit.bsdf)];
+    return makeShadePoint(hit, dir, depth, level, seed, two);
+  }
   // Technique of a point's material: 0 none, 1 cache, 2 BSDF sampling.
   int technique(const ShadePoint& sp) const;
   CacheKey keyFor(const ShadePoint& sp) const;

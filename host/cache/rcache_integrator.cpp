@@ -138,27 +138,26 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     }
   }
 
-  std::vector<bool> twoSided(scene.bsdfs.size());
-  for (size_t i = 0; i < scene.bsdfs.size(); ++i) twoSided[i] = scene.bsdfs[i]->typeName() == "twosided";
+  // The primary hit of one film position (camera ray, shade point, visible emission).
+  auto primaryAt = [&](const Vec2& fpos, int pixel, uint64_t sampleSeed) {
+    const Ray ray = camera.generate(fpos);
+    const Hit hit = ctx.accel.intersect(ray);
+    Primary p;
+    p.filmPos = fpos;
+    p.sp = engine.shadePointOf(hit, ray.d, 1, 0, sampleSeed);
+    p.sp.pixel = pixel;
+    if (maxDepth != 0 && !settings_.hideEmitters) {
+      if (!hit.valid()) p.Le = ctx.lights.environment(ray.d);
+      else if (hit.emitter >= 0) p.Le = emitted(scene, hit, -ray.d);
+    }
+    return p;
+  };
   // Primary hits of a set of film positions.
   auto primaries = [&](const std::vector<Vec2>& pos, const std::vector<int>& pixel, const std::vector<uint64_t>& seeds,
                        std::vector<Primary>& out) {
     out.resize(pos.size());
     parallelFor(pos.size(), 256, [&](size_t b, size_t e) {
-      for (size_t i = b; i < e; ++i) {
-        const Ray ray = camera.generate(pos[i]);
-        const Hit hit = ctx.accel.intersect(ray);
-        Primary& p = out[i];
-        p.filmPos = pos[i];
-        const bool two = hit.valid() && hit.bsdf >= 0 && twoSided[static_cast<size_t>(hit.bsdf)];
-        p.sp = makeShadePoint(hit, ray.d, 1, 0, seeds[i], two);
-        p.sp.pixel = pixel[i];
-        p.Le = Color(0.0f);
-        if (maxDepth != 0 && !settings_.hideEmitters) {
-          if (!hit.valid()) p.Le = ctx.lights.environment(ray.d);
-          else if (hit.emitter >= 0) p.Le = emitted(scene, hit, -ray.d);
-        }
-      }
+      for (size_t i = b; i < e; ++i) out[i] = primaryAt(pos[i], pixel[i], seeds[i]);
     });
   };
 
@@ -254,16 +253,14 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     const int y0 = band * rowsPerBand, y1 = std::min(H, y0 + rowsPerBand);
     const size_t pixels = static_cast<size_t>(y1 - y0) * W, n = pixels * static_cast<size_t>(spp);
     std::vector<Primary> prim(n);
-    std::vector<int> pix(n);
     std::vector<Color> direct(n, Color(0.0f));
     // Cached indirect light is smooth (the cache itself interpolates over ≥ r_min pixels), so
     // the samples of one pixel that land on the same surface share one lookup at the first of
     // them; direct light, emission and importance-sampled (sharp) materials stay per sample, so
     // edges, shadows and sharp reflections keep their anti-aliasing. share_pixel=false: one
-    // lookup per sample. rep[i] = the sample whose lookup sample i uses; repCount[pixel] = how
-    // many representatives the pixel has. Everything per pixel runs in parallel over pixels.
+    // lookup per sample. rep[i] = the sample whose lookup sample i uses. Everything per pixel
+    // runs in parallel over pixels.
     std::vector<uint32_t> rep(n);
-    std::vector<uint32_t> repCount(pixels, 0);
     parallelFor(pixels, 16, [&](size_t pb, size_t pe) {
       std::vector<uint32_t> pixelReps;
       for (size_t q = pb; q < pe; ++q) {
@@ -273,21 +270,9 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
           const size_t i = q * spp + s;
           Rng jitter = pixelRng(seed, W, x, y, s);
           const float fx = jitter.nextFloat(), fy = jitter.nextFloat();
-          const Vec2 fpos(x + fx, y + fy);
           const uint64_t sseed = hashMix(seed, static_cast<uint64_t>(y) * W + x, 0xF1A1000000ULL + s);
-          const Ray ray = camera.generate(fpos);
-          const Hit hit = ctx.accel.intersect(ray);
-          Primary& p = prim[i];
-          p.filmPos = fpos;
-          const bool two = hit.valid() && hit.bsdf >= 0 && twoSided[static_cast<size_t>(hit.bsdf)];
-          p.sp = makeShadePoint(hit, ray.d, 1, 0, sseed, two);
-          p.sp.pixel = y * W + x;
-          pix[i] = p.sp.pixel;
-          if (maxDepth != 0 && !settings_.hideEmitters) {
-            if (!hit.valid()) p.Le = ctx.lights.environment(ray.d);
-            else if (hit.emitter >= 0) p.Le = emitted(scene, hit, -ray.d);
-          }
-          const ShadePoint& sp = p.sp;
+          prim[i] = primaryAt(Vec2(x + fx, y + fy), y * W + x, sseed);
+          const ShadePoint& sp = prim[i].sp;
           if (sp.active && !(maxDepth >= 0 && 2 > maxDepth)) {
             Rng rng(sp.seed, 1);
             direct[i] = directLight(ctx, sp.hit, sp.frame, sp.wo, *scene.bsdfs[sp.hit.bsdf], rng, params_.lightSamples);
@@ -304,10 +289,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
               }
             }
           }
-          if (rep[i] == i) {
-            ++repCount[q];
-            if (cached) pixelReps.push_back(static_cast<uint32_t>(i));
-          }
+          if (rep[i] == i && cached) pixelReps.push_back(static_cast<uint32_t>(i));
         }
       }
     });
@@ -315,9 +297,6 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     // Representatives in sample order (the order is what makes the image independent of threads).
     std::vector<size_t> slot(n, 0);
     std::vector<ShadePoint> repPts;
-    size_t total = 0;
-    for (uint32_t c : repCount) total += c;
-    repPts.reserve(total);
     for (size_t i = 0; i < n; ++i)
       if (rep[i] == i) {
         slot[i] = repPts.size();
@@ -331,7 +310,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
       const ShadePoint& sp = prim[i].sp;
       const LookupAov& la = repAov[slot[rep[i]]];
       const Color L = prim[i].Le + direct[i] + repInd[slot[rep[i]]];
-      const int px = pix[i] % W, py = pix[i] / W;
+      const int px = sp.pixel % W, py = sp.pixel / W;
       if (isFinite(L)) tile->splat(prim[i].filmPos, L);
       else ++nanSamples;
       if (aovRadius) tile->addAov("radius", px, py, Color(la.meanA, la.meanRadiusPx, 0.0f));
