@@ -1,5 +1,7 @@
 #include "render/direct_light.h"
 
+#include <algorithm>
+
 #include "render/light_sampler.h"
 
 namespace rc {
@@ -21,41 +23,41 @@ bool visible(const Accel& accel, const Hit& hit, const LightSample& ls) {
   return !accel.occluded(shadow);
 }
 
-Color sampleLightMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
-                     const Bsdf& bsdf, Rng& rng) {
-  return sampleLightMisN(ctx, hit, frame, woLocal, bsdf, rng, 1);
-}
-
-Color sampleLightMisN(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
-                      const Bsdf& bsdf, Rng& rng, int lightSamples) {
+namespace {
+// One light sample and its shadow ray. misLightSamples = n > 0: MIS-weighted as one of n light
+// samples beside one BSDF sample (power heuristic on n·pdf_light vs pdf_bsdf, Veach's multi-sample
+// MIS); 0: light sampling alone, weight 1.
+Color lightSampleContribution(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                              const Bsdf& bsdf, Rng& rng, int misLightSamples) {
   // Always draw the same three numbers so the stream stays aligned whatever happens below.
   const float uLight = rng.nextFloat();
   const Vec2 u(rng.nextFloat(), rng.nextFloat());
   if (ctx.lights.empty() || !hasSmoothLobe(bsdf)) return Color(0.0f);
   const std::optional<LightSample> ls = ctx.lights.sample(hit.p, u, uLight);
-  if (!ls) return Color(0.0f);
+  if (!ls || !(ls->pdf > 0.0f || ls->delta)) return Color(0.0f);
   const Vec3 wiLocal = frame.toLocal(ls->wi);
   const Color f = bsdf.eval(woLocal, wiLocal);
   if (maxComponent(f) <= 0.0f || maxComponent(ls->radiance) <= 0.0f) return Color(0.0f);
   if (!visible(ctx.accel, hit, *ls)) return Color(0.0f);
-  // With n light samples per BSDF sample the power heuristic weighs n·pdf_light against pdf_bsdf
-  // (Veach's multi-sample MIS); n = 1 is the usual one-sample estimator.
-  const float n = static_cast<float>(lightSamples);
-  const float weight = ls->delta ? 1.0f : powerHeuristic(n * ls->pdf, bsdf.pdf(woLocal, wiLocal));
-  return f * ls->radiance * weight;
+  if (misLightSamples == 0 || ls->delta) return f * ls->radiance;
+  const float n = static_cast<float>(misLightSamples);
+  return f * ls->radiance * powerHeuristic(n * ls->pdf, bsdf.pdf(woLocal, wiLocal));
+}
+}  // namespace
+
+Color sampleLightMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                     const Bsdf& bsdf, Rng& rng) {
+  return lightSampleContribution(ctx, hit, frame, woLocal, bsdf, rng, 1);
+}
+
+Color sampleLightMisN(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                      const Bsdf& bsdf, Rng& rng, int lightSamples) {
+  return lightSampleContribution(ctx, hit, frame, woLocal, bsdf, rng, std::max(1, lightSamples));
 }
 
 Color directLightLightOnly(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
                            const Bsdf& bsdf, Rng& rng) {
-  const float uLight = rng.nextFloat();
-  const Vec2 u(rng.nextFloat(), rng.nextFloat());
-  if (ctx.lights.empty() || !hasSmoothLobe(bsdf)) return Color(0.0f);
-  const std::optional<LightSample> ls = ctx.lights.sample(hit.p, u, uLight);
-  if (!ls || !(ls->pdf > 0.0f || ls->delta)) return Color(0.0f);
-  const Color f = bsdf.eval(woLocal, frame.toLocal(ls->wi));
-  if (maxComponent(f) <= 0.0f || maxComponent(ls->radiance) <= 0.0f) return Color(0.0f);
-  if (!visible(ctx.accel, hit, *ls)) return Color(0.0f);
-  return f * ls->radiance;
+  return lightSampleContribution(ctx, hit, frame, woLocal, bsdf, rng, 0);
 }
 
 Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorld, const Hit& next, float bsdfPdf,
