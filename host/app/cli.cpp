@@ -119,6 +119,7 @@ int runRender(const std::vector<std::string>& args) {
   ProgressBar bar(ra.quiet);
   RenderOptions opts;
   opts.spp = ra.spp;
+  opts.sampler = ra.sampler;
   opts.seed = ra.seed;
   opts.quiet = ra.quiet;
   opts.aovs = ra.aovs;

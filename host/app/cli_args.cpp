@@ -11,7 +11,7 @@ const char* usageText() {
   return "usage:\n"
          "  rcache SCENE.xml [-o out.exr|png|hdr] [-D name=value]... [--integrator auto|rcache|path]\n"
          "                   [--spp N] [--device cpu|opencl|opencl:P:D] [-t THREADS] [--seed S] [--quiet]\n"
-         "                   [--stats out.json] [--aov records,radius,technique,contributors]\n"
+         "                   [--sampler independent|ldsampler] [--stats out.json] [--aov records,radius,technique,contributors]\n"
          "                   [--cache-save F] [--cache-load F] [--lenient]\n"
          "  rcache devices                       list OpenCL platforms and devices\n"
          "  rcache verify [--device D] [--order N]   kernels vs scalar reference\n"
@@ -86,6 +86,10 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
       r.threads = static_cast<int>(parseInteger(a, cur.value(a), 1, 1024));
     } else if (a == "--seed") {
       r.seed = static_cast<uint64_t>(parseInteger(a, cur.value(a), 0, (1LL << 62)));
+    } else if (a == "--sampler") {
+      r.sampler = cur.value(a);
+      if (r.sampler != "independent" && r.sampler != "ldsampler")
+        throw Error("--sampler: expected independent or ldsampler, got '" + r.sampler + "'");
     } else if (a == "--quiet" || a == "-q") {
       r.quiet = true;
     } else if (a == "--lenient") {

@@ -17,6 +17,7 @@ struct RenderArgs {
   std::string device;                          // "" → RC_DEVICE or auto
   int threads = 0;                             // 0 → all hardware threads
   uint64_t seed = 0;
+  std::string sampler;                         // "" → scene's <sampler>
   bool quiet = false;
   bool lenient = false;
   std::string statsPath;

@@ -672,9 +672,10 @@ void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<
   parallelFor(n, 64, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& sp = pts[i];
-      Rng rng(sp.seed, 2);
-      const float u1 = rng.nextFloat(), u2 = rng.nextFloat(), u3 = rng.nextFloat();
-      const auto s = ctx_.scene.bsdfs[sp.hit.bsdf]->sample(sp.wo, u1, Vec2(u2, u3));
+      Rng rng = shadePointRng(sp, 2);
+      const Vec2 u = rng.next2D();
+      const float uLobe = rng.nextFloat();
+      const auto s = ctx_.scene.bsdfs[sp.hit.bsdf]->sample(sp.wo, uLobe, u);
       if (!s || !isFinite(s->weight) || maxComponent(s->weight) <= 0.0f) continue;
       Color w = s->weight;
       if (sp.depth >= rrDepth_) {

@@ -86,6 +86,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   const int maxDepth = settings_.maxDepth;
   const int spp = ctx.options.spp > 0 ? ctx.options.spp : scene.sampleCount;
   const uint64_t seed = scene.samplerSeed + ctx.options.seed;
+  const bool lowDiscrepancy = usesLowDiscrepancy(ctx);
   auto cancelled = [&] { return ctx.cancel && ctx.cancel->load(std::memory_order_relaxed); };
 
   // Materials: technique, SH order and BRDF×cos tables (nothing is built without cached materials).
@@ -268,15 +269,17 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
         pixelReps.clear();
         for (int s = 0; s < spp; ++s) {
           const size_t i = q * spp + s;
-          Rng jitter = pixelRng(seed, W, x, y, s);
-          const float fx = jitter.nextFloat(), fy = jitter.nextFloat();
+          // One stream per sample: camera, then direct light, then (importance-sampled
+          // materials) the continuation's BSDF sample, all from the pixel's low-discrepancy
+          // dimensions where the sampler is ldsampler.
+          Rng rng = pixelRng(seed, W, x, y, s, lowDiscrepancy);
+          const Vec2 f = rng.next2D();
           const uint64_t sseed = hashMix(seed, static_cast<uint64_t>(y) * W + x, 0xF1A1000000ULL + s);
-          prim[i] = primaryAt(Vec2(x + fx, y + fy), y * W + x, sseed);
-          const ShadePoint& sp = prim[i].sp;
-          if (sp.active && !(maxDepth >= 0 && 2 > maxDepth)) {
-            Rng rng(sp.seed, 1);
+          prim[i] = primaryAt(Vec2(static_cast<float>(x), static_cast<float>(y)) + f, y * W + x, sseed);
+          ShadePoint& sp = prim[i].sp;
+          if (sp.active && !(maxDepth >= 0 && 2 > maxDepth))
             direct[i] = directLight(ctx, sp.hit, sp.frame, sp.wo, *scene.bsdfs[sp.hit.bsdf], rng, params_.lightSamples);
-          }
+          continueLowDiscrepancy(sp, rng);
           rep[i] = static_cast<uint32_t>(i);
           const bool cached = sp.active && engine.technique(sp) == 1;
           if (params_.sharePixel && cached) {
@@ -423,6 +426,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   stats.set("kernel_interpolate_s", kt.interpolate_s);
   stats.set("kernel_brdf_dot_s", kt.brdfDot_s);
   stats.setText("device", backend->deviceName());
+  stats.setText("sampler", lowDiscrepancy ? "ldsampler" : "independent");
   stats.setText("interpolation_frame", params_.autoFrame ? "auto" : params_.worldFrame ? "world" : "record");
   stats.set("lookups_record_frame", double(es.recordFrameLookups.load()));
   stats.set("lookups_relaxed", double(es.relaxedLookups.load()));

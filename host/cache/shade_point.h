@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "core/frame.h"
+#include "core/rng.h"
 #include "geometry/accel.h"
 
 namespace rc {
@@ -17,8 +18,27 @@ struct ShadePoint {
   int level = 0;         // diffuse/glossy vertices before this point
   uint64_t seed = 0;     // this point's RNG stream (Rng(seed, 1)), independent of scheduling
   int pixel = -1;        // camera pixel it came from (primary points), for AOVs
+  // Primary points of a low-discrepancy pixel sample: the sample's unused Sobol dimensions
+  // [ldDim, Rng::kPixelLowDiscrepancyDims) serve this point's own sampling; ldDim = 0: none.
+  uint32_t ldSeed = 0, ldIndex = 0, ldDim = 0;
   bool active = false;   // false: nothing to shade (miss, no BSDF, back of a one-sided BSDF)
 };
+
+// The RNG of a shade point's sampling decisions, stream `stream`: PCG, after the rest of the
+// pixel sample's low-discrepancy dimensions where the point has them.
+inline Rng shadePointRng(const ShadePoint& sp, uint64_t stream) {
+  Rng rng(sp.seed, stream);
+  if (sp.ldDim != 0) rng.useLowDiscrepancy(sp.ldSeed, sp.ldIndex, Rng::kPixelLowDiscrepancyDims, sp.ldDim);
+  return rng;
+}
+
+// Hands the unused low-discrepancy dimensions of `rng` (a pixel sample's) on to `sp`.
+inline void continueLowDiscrepancy(ShadePoint& sp, const Rng& rng) {
+  if (rng.lowDiscrepancyDim() >= rng.lowDiscrepancyDims()) return;
+  sp.ldSeed = rng.lowDiscrepancySeed();
+  sp.ldIndex = rng.lowDiscrepancyIndex();
+  sp.ldDim = rng.lowDiscrepancyDim();
+}
 
 // Builds the shade point of a ray's hit (dir = ray direction, world).
 inline ShadePoint makeShadePoint(const Hit& hit, const Vec3& dir, int depth, int level, uint64_t seed,

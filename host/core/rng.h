@@ -1,7 +1,15 @@
 #pragma once
 // PCG32 (O'Neill 2014): small, fast, statistically good, and seekable by stream so that every
 // pixel/record gets its own deterministic sequence independent of thread scheduling.
+//
+// A pixel sample may put a low-discrepancy prefix in front of the stream (useLowDiscrepancy): its
+// first dimensions then come from the pixel's padded Owen-scrambled Sobol sequence
+// (core/low_discrepancy.h), the rest from PCG. Consumers draw 2-D quantities with next2D(), which
+// starts them on a Sobol pair so both coordinates are stratified jointly.
 #include <cstdint>
+
+#include "core/low_discrepancy.h"
+#include "core/math.h"
 
 namespace rc {
 
@@ -17,7 +25,33 @@ class Rng {
     nextUint();
   }
 
+  // Draws number `firstDim`, `firstDim`+1, … of sample `index` of the padded Sobol sequence seeded
+  // by `seed` until draw `dims` (exclusive), then continues with this PCG stream.
+  void useLowDiscrepancy(uint32_t seed, uint32_t index, uint32_t dims, uint32_t firstDim = 0) {
+    ldSeed_ = seed;
+    ldIndex_ = index;
+    ldReversedIndex_ = ld::reverseBits(index);
+    ldDim_ = firstDim;
+    ldDims_ = dims;
+    ldShuffledValid_ = false;
+  }
+  // Dimensions a pixel sample takes from its low-discrepancy sequence: the camera, then for the
+  // first few vertices a light sample and a BSDF sample; deeper vertices gain little from it.
+  static constexpr uint32_t kPixelLowDiscrepancyDims = 24;
+  // Where the low-discrepancy prefix stands (dim == dims: used up or never set), so that a later
+  // stage of the same sample can continue it with useLowDiscrepancy(seed, index, dims, dim).
+  uint32_t lowDiscrepancySeed() const { return ldSeed_; }
+  uint32_t lowDiscrepancyIndex() const { return ldIndex_; }
+  uint32_t lowDiscrepancyDim() const { return ldDim_; }
+  uint32_t lowDiscrepancyDims() const { return ldDims_; }
+
   uint32_t nextUint() {
+    if (ldDim_ < ldDims_) {
+      // Both dimensions of a pair use the same shuffled index: computed at the pair's first.
+      if (!(ldDim_ & 1u) || !ldShuffledValid_) ldShuffled_ = ld::shuffledIndex(ldReversedIndex_, ldDim_ >> 1, ldSeed_);
+      ldShuffledValid_ = !(ldDim_ & 1u);
+      return ld::paddedSobolShuffled(ldShuffled_, ldDim_++, ldSeed_);
+    }
     const uint64_t old = state_;
     state_ = old * 6364136223846793005ULL + inc_;
     const uint32_t xorshifted = static_cast<uint32_t>(((old >> 18u) ^ old) >> 27u);
@@ -27,6 +61,12 @@ class Rng {
 
   // Uniform in [0, 1): 24 random mantissa bits, never returns 1.
   float nextFloat() { return static_cast<float>(nextUint() >> 8) * (1.0f / 16777216.0f); }
+  // A 2-D sample; inside the low-discrepancy prefix it starts on a new Sobol pair.
+  Vec2 next2D() {
+    if ((ldDim_ & 1u) && ldDim_ < ldDims_) ++ldDim_;
+    const float x = nextFloat();
+    return Vec2(x, nextFloat());
+  }
   double nextDouble() {
     const uint64_t hi = nextUint(), lo = nextUint();
     return static_cast<double>(((hi << 21) ^ lo) & ((1ULL << 53) - 1)) * (1.0 / 9007199254740992.0);
@@ -34,6 +74,10 @@ class Rng {
 
  private:
   uint64_t state_ = 0, inc_ = 1;
+  uint32_t ldSeed_ = 0, ldIndex_ = 0, ldDim_ = 0, ldDims_ = 0;
+  uint32_t ldReversedIndex_ = 0;
+  uint32_t ldShuffled_ = 0;       // shuffled index of the current pair
+  bool ldShuffledValid_ = false;  // ldShuffled_ belongs to ldDim_'s pair (set at its even dim)
 };
 
 // Mixes several integers into one well-distributed 64-bit value (for per-pixel streams).

@@ -29,9 +29,10 @@ namespace {
 // MIS); 0: light sampling alone, weight 1.
 Color lightSampleContribution(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
                               const Bsdf& bsdf, Rng& rng, int misLightSamples) {
-  // Always draw the same three numbers so the stream stays aligned whatever happens below.
+  // Always draw the same three numbers so the stream stays aligned whatever happens below; the
+  // point on the light first, so that it gets a low-discrepancy pair of its own.
+  const Vec2 u = rng.next2D();
   const float uLight = rng.nextFloat();
-  const Vec2 u(rng.nextFloat(), rng.nextFloat());
   if (ctx.lights.empty() || !hasSmoothLobe(bsdf)) return Color(0.0f);
   const std::optional<LightSample> ls = ctx.lights.sample(hit.p, u, uLight);
   if (!ls || !(ls->pdf > 0.0f || ls->delta)) return Color(0.0f);
@@ -81,8 +82,8 @@ Color directLight(const RenderContext& ctx, const Hit& hit, const Frame& frame, 
   Color L(0.0f);
   for (int k = 0; k < lightSamples; ++k) L += sampleLightMisN(ctx, hit, frame, woLocal, bsdf, rng, lightSamples);
   if (lightSamples > 1) L /= static_cast<float>(lightSamples);
+  const Vec2 u = rng.next2D();
   const float uLobe = rng.nextFloat();
-  const Vec2 u(rng.nextFloat(), rng.nextFloat());
   if (ctx.lights.empty()) return L;
   const std::optional<BsdfSample> bs = bsdf.sample(woLocal, uLobe, u);
   if (!bs || maxComponent(bs->weight) <= 0.0f) return L;

@@ -19,6 +19,7 @@ class ShBackend;     // cl/sh_backend.h
 struct RenderOptions {
   int spp = 0;               // 0 = scene's sample_count
   uint64_t seed = 0;         // added to the scene sampler's seed
+  std::string sampler;       // "" = the scene's <sampler>; else independent | ldsampler
   bool quiet = false;        // no progress bar
   std::vector<std::string> aovs;  // requested AOV names (integrator-specific)
   std::string cacheSave;          // rcache: write the view-independent cache here after rendering

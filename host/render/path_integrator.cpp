@@ -41,8 +41,8 @@ Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings,
 
     L += throughput * sampleLightMis(ctx, hit, frame, wo, bsdf, rng);
 
+    const Vec2 u = rng.next2D();
     const float uLobe = rng.nextFloat();
-    const Vec2 u(rng.nextFloat(), rng.nextFloat());
     const std::optional<BsdfSample> bs = bsdf.sample(wo, uLobe, u);
     if (!bs) break;
     throughput *= bs->weight;
@@ -85,6 +85,7 @@ class PathIntegrator final : public Integrator {
     loop.spp = ctx.options.spp > 0 ? ctx.options.spp : ctx.scene.sampleCount;
     if (loop.spp <= 0) throw Error("sampler: sample_count must be positive");
     loop.seed = ctx.scene.samplerSeed + ctx.options.seed;
+    loop.lowDiscrepancy = usesLowDiscrepancy(ctx);
     loop.phase = "path";
     const RenderLoopResult result = renderSamples(ctx, film, loop, [&](const SampleInput& in, Rng& rng, TileFilm&) {
       return pathRadiance(ctx, settings_, camera.generate(in.filmPos), rng);
@@ -95,6 +96,7 @@ class PathIntegrator final : public Integrator {
     stats.setText("integrator", "path");
     stats.set("time_s", seconds);
     stats.set("spp", loop.spp);
+    stats.setText("sampler", loop.lowDiscrepancy ? "ldsampler" : "independent");
     stats.set("samples", static_cast<double>(result.samples));
     stats.set("nan_samples", static_cast<double>(result.nanSamples));
     stats.set("rays", rays);

@@ -61,6 +61,11 @@ RenderLoopResult renderTiles(const RenderContext& ctx, Film& film, const RenderL
   return result;
 }
 
+bool usesLowDiscrepancy(const RenderContext& ctx) {
+  const std::string& name = ctx.options.sampler.empty() ? ctx.scene.samplerType : ctx.options.sampler;
+  return name == "ldsampler";
+}
+
 RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
                                const SampleFn& fn) {
   std::atomic<uint64_t> samples{0}, nans{0};
@@ -71,12 +76,12 @@ RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const Rende
     for (int py = tile.y0(); py < tile.y1(); ++py)
       for (int px = tile.x0(); px < tile.x1(); ++px)
         for (int s = 0; s < spp; ++s) {
-          Rng rng = pixelRng(settings.seed, width, px, py, s);
+          Rng rng = pixelRng(settings.seed, width, px, py, s, settings.lowDiscrepancy);
           SampleInput in;
           in.px = px;
           in.py = py;
           in.sampleIndex = s;
-          in.filmPos = Vec2(static_cast<float>(px) + rng.nextFloat(), static_cast<float>(py) + rng.nextFloat());
+          in.filmPos = Vec2(static_cast<float>(px), static_cast<float>(py)) + rng.next2D();
           const Color L = fn(in, rng, tile);
           if (!isFinite(L)) {
             ++tileNans;  // dropped, never splatted

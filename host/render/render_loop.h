@@ -16,6 +16,7 @@ namespace rc {
 struct RenderLoopSettings {
   int spp = 1;
   uint64_t seed = 0;
+  bool lowDiscrepancy = false;  // pixel samples start with their padded Sobol dimensions
   int tileSize = 32;
   std::string phase = "render";  // progress label
 };
@@ -44,11 +45,19 @@ RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const Rende
 RenderLoopResult renderTiles(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
                              const TileFn& fn);
 
-// The RNG of sample `sampleIndex` of pixel (px, py) of an image `width` wide.
-inline Rng pixelRng(uint64_t seed, int width, int px, int py, int sampleIndex) {
+// The RNG of sample `sampleIndex` of pixel (px, py) of an image `width` wide; with lowDiscrepancy
+// its first Rng::kPixelLowDiscrepancyDims draws are the pixel's padded Sobol points.
+inline Rng pixelRng(uint64_t seed, int width, int px, int py, int sampleIndex, bool lowDiscrepancy = false) {
   const uint64_t pixel = static_cast<uint64_t>(py) * static_cast<uint64_t>(width) + static_cast<uint64_t>(px);
   // Everything hashed into the state: PCG streams that differ only in the increment are correlated.
-  return Rng(hashMix(seed, pixel, static_cast<uint64_t>(sampleIndex)), pixel);
+  Rng rng(hashMix(seed, pixel, static_cast<uint64_t>(sampleIndex)), pixel);
+  if (lowDiscrepancy)
+    rng.useLowDiscrepancy(static_cast<uint32_t>(hashMix(seed, pixel, 0x1D5A3B1E5ULL)), static_cast<uint32_t>(sampleIndex),
+                          Rng::kPixelLowDiscrepancyDims);
+  return rng;
 }
+
+// Whether pixel samples use the low-discrepancy sampler: --sampler if given, else the scene's.
+bool usesLowDiscrepancy(const RenderContext& ctx);
 
 }  // namespace rc

@@ -85,6 +85,9 @@ struct Scene {
   FilmSettings film;
   int sampleCount = 4;
   uint64_t samplerSeed = 0;
+  // <sampler type>: "independent" (PCG per sample) or "ldsampler" (padded Owen-scrambled Sobol,
+  // core/low_discrepancy.h); Mitsuba's stratified/multijitter/orthogonal load as "ldsampler".
+  std::string samplerType = "independent";
   IntegratorSettings integrator;
 };
 

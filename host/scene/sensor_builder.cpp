@@ -46,10 +46,21 @@ void buildFilm(Loader& loader, const Element& e, FilmSettings& film) {
 
 void buildSampler(Loader& loader, const Element& e, Scene& scene) {
   for (const pugi::xml_node& child : e.children) loader.unexpectedChild(e, child);
-  if (e.type != "independent") {
-    loader.unsupported(e.where() + ": unknown plugin '" + e.type + "'");
+  // Mitsuba's stratified samplers are served by the low-discrepancy one: per pixel it stratifies
+  // every pair of dimensions jointly (a (0,m,2)-net per pair), which is what they are for. Their
+  // jitter/strength settings are read and have no effect (our points are always randomised: a
+  // sampler without jitter would bias the image).
+  const bool stratifiedFamily = e.type == "stratified" || e.type == "multijitter" || e.type == "orthogonal";
+  if (e.type != "independent" && e.type != "ldsampler" && !stratifiedFamily) {
+    loader.unsupported(e.where() + ": unknown plugin '" + e.type + "' (known: independent, ldsampler, stratified, "
+                       "multijitter, orthogonal)");
     return;
   }
+  if (stratifiedFamily) {
+    e.located([&] { return e.props.getBool("jitter", true); });
+    if (e.type == "orthogonal") e.located([&] { return e.props.getFloat("strength", 2.0f); });
+  }
+  scene.samplerType = e.type == "independent" ? "independent" : "ldsampler";
   const int count = e.located([&] { return e.props.getInt("sample_count", 4); });
   if (count <= 0) e.failParam("sample_count", "'sample_count' must be positive, got " + std::to_string(count));
   const int seed = e.located([&] { return e.props.getInt("seed", 0); });

@@ -34,6 +34,7 @@ expect_error zero_width "width" -- "$DATA/zero_width.xml" -o "$TMP/z.exr"
 expect_error bad_extension "unsupported output format" -- "$DATA/tiny.xml" -o "$TMP/out.jpg2"
 expect_error unwritable "not writable" -- "$DATA/tiny.xml" -o "/proc/nope/out.exr"
 expect_error bad_device "opencl:9:9" -- "$DATA/tiny.xml" --integrator rcache --device opencl:9:9 -o "$TMP/d.exr" --quiet
+expect_error bad_sampler "--sampler: expected independent or ldsampler" -- "$DATA/tiny.xml" --sampler halton -o "$TMP/s.exr"
 expect_error undefined_param "undefined_thing" -- "$DATA/tiny.xml" -o "$TMP/p.exr" -D res='$undefined_thing'
 ls "$TMP"/*.exr >/dev/null 2>&1 && fail no_partial_outputs "$(ls "$TMP")" || pass no_partial_outputs
 
@@ -49,6 +50,17 @@ PY
 else
   fail path_render "exit $?"
 fi
+
+# --sampler overrides the scene's <sampler> and the statistics say which one ran, for both integrators.
+for integ in path rcache; do
+  if "$RC" "$DATA/tiny.xml" --integrator $integ --sampler ldsampler -D rays=64 -o "$TMP/ld_$integ.exr" --quiet \
+      --stats "$TMP/ld_$integ.json" -t 2; then
+    python3 -c "import json,sys; sys.exit(0 if json.load(open(sys.argv[1]))['sampler']=='ldsampler' else 1)" \
+      "$TMP/ld_$integ.json" && pass "sampler_override_$integ" || fail "sampler_override_$integ" "stats: $(cat "$TMP/ld_$integ.json")"
+  else
+    fail "sampler_override_$integ" "exit $?"
+  fi
+done
 
 # Determinism: same seed and threads → identical image.
 "$RC" "$DATA/tiny.xml" --integrator path -o "$TMP/path2.exr" --quiet --seed 3 -t 2

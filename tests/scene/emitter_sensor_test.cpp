@@ -122,8 +122,25 @@ TEST(SceneSensor, PerspectiveFilmSampler) {
   EXPECT_NEAR(s.film.gaussianStddev, 0.3f, 1e-7f);
   EXPECT_EQ(s.sampleCount, 64);
   EXPECT_EQ(s.samplerSeed, 7u);
+  EXPECT_EQ(s.samplerType, "independent");
   const Scene b = loadText(dir, sceneXml("", "<sensor type=\"perspective\"><film type=\"hdrfilm\"><rfilter type=\"box\"/></film></sensor>"));
   EXPECT_EQ(b.film.filter, "box");
+  EXPECT_EQ(b.samplerType, "independent");  // Mitsuba's default
+}
+
+// ldsampler, and Mitsuba's stratified family served by it (their parameters are read, not
+// reported as unused).
+TEST(SceneSensor, LowDiscrepancySamplers) {
+  TempDir dir;
+  auto sampler = [&](const std::string& body) {
+    return loadText(dir, sceneXml("", "<sensor type=\"perspective\">" + body + "</sensor>"));
+  };
+  const Scene ld = sampler("<sampler type=\"ldsampler\"><integer name=\"sample_count\" value=\"32\"/></sampler>");
+  EXPECT_EQ(ld.samplerType, "ldsampler");
+  EXPECT_EQ(ld.sampleCount, 32);
+  EXPECT_EQ(sampler("<sampler type=\"stratified\"><boolean name=\"jitter\" value=\"true\"/></sampler>").samplerType, "ldsampler");
+  EXPECT_EQ(sampler("<sampler type=\"multijitter\"/>").samplerType, "ldsampler");
+  EXPECT_EQ(sampler("<sampler type=\"orthogonal\"><float name=\"strength\" value=\"2\"/></sampler>").samplerType, "ldsampler");
 }
 
 TEST(SceneSensor, BadValuesAreErrors) {
@@ -146,7 +163,9 @@ TEST(SceneSensor, BadValuesAreErrors) {
   bad("<film type=\"ldrfilm\"/>", {"unknown plugin 'ldrfilm'"});
   bad("<sampler type=\"independent\"><integer name=\"sample_count\" value=\"0\"/></sampler>", {"'sample_count' must be positive"});
   bad("<sampler type=\"independent\"><integer name=\"seed\" value=\"-1\"/></sampler>", {"'seed'"});
-  bad("<sampler type=\"stratified\"/>", {"unknown plugin 'stratified'"});
+  bad("<sampler type=\"halton\"/>", {"unknown plugin 'halton'", "known: independent, ldsampler"});
+  bad("<sampler type=\"ldsampler\"><integer name=\"sample_count\" value=\"-2\"/></sampler>", {"'sample_count' must be positive"});
+  bad("<sampler type=\"ldsampler\"><float name=\"jitter\" value=\"1\"/></sampler>", {"unsupported parameter 'jitter'"});
   bad("<float name=\"focal_length\" value=\"50\"/>", {"unsupported parameter 'focal_length'"});
   bad("<shape type=\"cube\"/>", {"unexpected <shape> inside <sensor>"});
   expectError([&] { loadText(dir, sceneXml("", "<sensor type=\"orthographic\"/>")); }, {"unknown plugin 'orthographic'"});
