@@ -245,6 +245,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     if (a != "records" && a != "radius" && a != "technique" && a != "contributors")
       throw Error("rcache: unknown AOV '" + a + "' (known: records, radius, technique, contributors)");
   uint64_t cameraRays = 0, nanSamples = 0;
+  std::atomic<uint64_t> directLightOnly{0};  // final-pass samples whose direct light skipped the BSDF ray
   auto totalRecords = [&] {
     size_t n = 0;
     for (auto& [k, c] : engine.caches()) n += c->size();
@@ -264,6 +265,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     std::vector<uint32_t> rep(n);
     parallelFor(pixels, 16, [&](size_t pb, size_t pe) {
       std::vector<uint32_t> pixelReps;
+      uint64_t lightOnlyCount = 0;
       for (size_t q = pb; q < pe; ++q) {
         const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
         pixelReps.clear();
@@ -278,7 +280,12 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
           prim[i] = primaryAt(Vec2(static_cast<float>(x), static_cast<float>(y)) + f, y * W + x, sseed);
           ShadePoint& sp = prim[i].sp;
           if (sp.active && !(maxDepth >= 0 && 2 > maxDepth))
-            direct[i] = directLight(ctx, sp.hit, sp.frame, sp.wo, *scene.bsdfs[sp.hit.bsdf], rng, params_.lightSamples);
+          {
+            bool lightOnly = false;
+            direct[i] = directLightCheapest(ctx, sp.hit, sp.frame, sp.wo, *scene.bsdfs[sp.hit.bsdf], rng,
+                                            params_.lightSamples, &lightOnly);
+            if (lightOnly) ++lightOnlyCount;
+          }
           continueLowDiscrepancy(sp, rng);
           rep[i] = static_cast<uint32_t>(i);
           const bool cached = sp.active && engine.technique(sp) == 1;
@@ -295,6 +302,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
           if (rep[i] == i && cached) pixelReps.push_back(static_cast<uint32_t>(i));
         }
       }
+      directLightOnly += lightOnlyCount;
     });
     cameraRays += n;
     // Representatives in sample order (the order is what makes the image independent of threads).
@@ -420,6 +428,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   stats.set("adaptive_shrinks", double(es.adaptiveShrinks.load()));
   stats.set("samples_dropped_nan", double(es.droppedSamples.load() + nanSamples));
   stats.set("bands_reshaded", double(reshaded));
+  stats.set("direct_light_only_fraction", cameraRays ? double(directLightOnly.load()) / double(cameraRays) : 0.0);
   const KernelTimes& kt = backend->times();
   stats.set("kernel_project_s", kt.project_s);
   stats.set("kernel_rotate_s", kt.rotate_s);

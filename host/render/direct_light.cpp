@@ -61,6 +61,15 @@ Color directLightLightOnly(const RenderContext& ctx, const Hit& hit, const Frame
   return lightSampleContribution(ctx, hit, frame, woLocal, bsdf, rng, 0);
 }
 
+Color directLightCheapest(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                          const Bsdf& bsdf, Rng& rng, int lightSamples, bool* lightOnly) {
+  const bool small = lightSamples == 1 && bsdf.isDiffuseOnly() &&
+                     ctx.lights.solidAngleBound(hit.p) <= kSmallLightsSolidAngle;
+  if (lightOnly) *lightOnly = small;
+  return small ? directLightLightOnly(ctx, hit, frame, woLocal, bsdf, rng)
+               : directLight(ctx, hit, frame, woLocal, bsdf, rng, lightSamples);
+}
+
 Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorld, const Hit& next, float bsdfPdf,
                  bool delta, int lightSamples) {
   const float n = static_cast<float>(lightSamples);

@@ -60,6 +60,19 @@ Color directLight(const RenderContext& ctx, const Hit& hit, const Frame& frame, 
 Color directLightLightOnly(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
                            const Bsdf& bsdf, Rng& rng);
 
+// Solid angle (sr) below which all lights count as small from a point (LightSampler::solidAngleBound).
+// With Ω ≤ 0.5 every emitter's bounding sphere has r/d ≤ 0.39, so over it the light estimator's
+// f·cos·Le/pdf varies by at most ((1+0.39)/(1−0.39))² ≈ 5× (area sampling's 1/d² term), and a
+// Lambertian BSDF strategy would carry at most Ω/(π+Ω) ≈ 14 % of the MIS weight.
+constexpr float kSmallLightsSolidAngle = 0.5f;
+
+// Direct light choosing its strategies per point: light sampling alone (one ray) on a
+// Lambertian BSDF where the lights are small (kSmallLightsSolidAngle), else directLight (MIS,
+// two rays). The choice depends only on the point, never on a sample, so the estimate stays
+// unbiased. *lightOnly (optional) reports the choice.
+Color directLightCheapest(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                          const Bsdf& bsdf, Rng& rng, int lightSamples, bool* lightOnly = nullptr);
+
 // Shadow ray from a surface hit toward a light sample; true when the light point is visible.
 bool visible(const Accel& accel, const Hit& hit, const struct LightSample& ls);
 

@@ -42,6 +42,8 @@ struct Entry {
   Distribution1D triangles;
   std::vector<Vec3> normals;  // orientedFaceNormal per triangle (computed once, not per sample)
   double area = 0.0;
+  Vec3 boundCenter{0.0f};  // bounding sphere of an area emitter (solidAngleBound)
+  float boundRadius = 0.0f;
   // area on a sphere
   int sphere = -1;
   // envmap
@@ -126,6 +128,11 @@ LightSampler::LightSampler(const Scene& scene) : impl_(std::make_unique<Impl>(sc
     }
     e.triangles = Distribution1D(areas);
     if (!(e.area > 0.0)) continue;
+    Vec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::uvec3& tri : mesh.triangles)
+      for (int k = 0; k < 3; ++k) lo = glm::min(lo, mesh.positions[tri[k]]), hi = glm::max(hi, mesh.positions[tri[k]]);
+    e.boundCenter = 0.5f * (lo + hi);
+    e.boundRadius = 0.5f * glm::length(hi - lo);
     const double p = kPiD * e.area * luminance(scene.emitters[mesh.emitter].radiance);
     im.meshEntry[m] = addEntry(std::move(e), p);
   }
@@ -137,6 +144,8 @@ LightSampler::LightSampler(const Scene& scene) : impl_(std::make_unique<Impl>(sc
     e.type = EmitterType::Area;
     e.emitter = sp.emitter;
     e.sphere = static_cast<int>(s);
+    e.boundCenter = sp.center;
+    e.boundRadius = sp.radius;
     const double area = 4.0 * kPiD * sp.radius * sp.radius;
     im.sphereEntry[s] = addEntry(std::move(e), kPiD * area * luminance(scene.emitters[sp.emitter].radiance));
   }
@@ -198,6 +207,20 @@ LightSampler::LightSampler(const Scene& scene) : impl_(std::make_unique<Impl>(sc
 }
 
 LightSampler::~LightSampler() = default;
+
+float LightSampler::solidAngleBound(const Vec3& p) const {
+  const Impl& im = *impl_;
+  if (!im.infinite.empty()) return 4.0f * kPi;
+  float total = 0.0f;
+  for (const Entry& e : im.entries) {
+    if (e.type != EmitterType::Area) continue;  // point and directional lights subtend none
+    const float d2 = glm::dot(p - e.boundCenter, p - e.boundCenter), r2 = e.boundRadius * e.boundRadius;
+    if (!(d2 > r2)) return 4.0f * kPi;
+    // Cap of a sphere of radius r seen from distance d: 2π(1 − √(1 − r²/d²)).
+    total += 2.0f * kPi * (1.0f - std::sqrt(1.0f - r2 / d2));
+  }
+  return total;
+}
 
 bool LightSampler::empty() const { return impl_->entries.empty(); }
 size_t LightSampler::emitterCount() const { return impl_->entries.size(); }

@@ -42,6 +42,10 @@ class LightSampler {
   // Solid-angle pdf (selection included) with which sample() returns direction dir from an infinite emitter.
   float environmentPdf(const Vec3& dir) const;
   bool hasEnvironment() const;
+  // An upper bound of the solid angle the emitters subtend from p (the area emitters' bounding
+  // spheres; 4π with an infinite emitter or from inside a bound). Lets a caller skip the BSDF
+  // strategy of MIS where the lights are small: there light sampling alone is nearly optimal.
+  float solidAngleBound(const Vec3& p) const;
 
   bool empty() const;
   size_t emitterCount() const;

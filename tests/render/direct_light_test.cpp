@@ -165,6 +165,62 @@ TEST(DirectLight, MisMatchesPureBsdfSampling) {
   }
 }
 
+// solidAngleBound: the cap of each area emitter's bounding sphere, 4π with an infinite emitter
+// or from inside a bound; directLightCheapest picks light-only sampling only for a Lambertian
+// BSDF under small lights and keeps the mean of full MIS.
+TEST(DirectLight, CheapestChoosesLightOnlyUnderSmallLightsOnly) {
+  Scene s;
+  const int white = test::addBsdf(s, test::diffuse(Color(0.8f)));
+  const int glossy = test::addBsdf(s, test::roughMirror(0.3f));
+  s.meshes.push_back(test::quad({-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}, white));
+  s.meshes.push_back(test::quad({-5, -5, 0.001f}, {-4, -5, 0.001f}, {-4, -4, 0.001f}, {-5, -4, 0.001f}, glossy));
+  const int light = test::addEmitter(s, test::areaEmitter(Color(10.0f)));
+  // 0.2 × 0.2 light at height 2 facing down: bounding radius 0.1414.
+  s.meshes.push_back(test::quad({-0.1f, -0.1f, 2}, {-0.1f, 0.1f, 2}, {0.1f, 0.1f, 2}, {0.1f, -0.1f, 2}, white, light));
+  const test::World w(std::move(s));
+  const float r = 0.1f * std::sqrt(2.0f);
+  const Vec3 far(0, 0, 0), near(0, 0, 1.95f);
+  EXPECT_NEAR(w.lights->solidAngleBound(far), 2 * kPi * (1 - std::sqrt(1 - r * r / 4)), 1e-5f);
+  EXPECT_EQ(w.lights->solidAngleBound(Vec3(0, 0, 1.99f)), 4 * kPi);  // inside the bound
+  EXPECT_GT(w.lights->solidAngleBound(near), kSmallLightsSolidAngle);
+
+  const RenderContext ctx = w.context();
+  auto hitAt = [&](const Vec3& o, const Vec3& target) {
+    Ray ray;
+    ray.o = o;
+    ray.d = glm::normalize(target - o);
+    return w.accel->intersect(ray);
+  };
+  const Hit floorHit = hitAt(Vec3(0.5f, 0.2f, 1.0f), Vec3(0.3f, 0.1f, 0.0f));
+  const Hit glossyHit = hitAt(Vec3(-4.5f, -4.5f, 1.0f), Vec3(-4.5f, -4.4f, 0.0f));
+  ASSERT_TRUE(floorHit.valid());
+  ASSERT_TRUE(glossyHit.valid());
+  ASSERT_EQ(glossyHit.bsdf, glossy);
+  for (const Hit* h : {&floorHit, &glossyHit}) {
+    const Bsdf& bsdf = *w.scene.bsdfs[h->bsdf];
+    const Frame frame = h->frame();
+    const Vec3 wo(0, 0, 1);
+    Stat cheap, mis;
+    bool lightOnly = false;
+    for (int i = 0; i < 40000; ++i) {
+      Rng a(hashMix(11, i)), b(hashMix(12, i));
+      cheap.add(directLightCheapest(ctx, *h, frame, wo, bsdf, a, 1, &lightOnly));
+      mis.add(directLight(ctx, *h, frame, wo, bsdf, b));
+    }
+    EXPECT_EQ(lightOnly, h == &floorHit);  // Lambertian under a small light: light only; glossy: MIS
+    for (int k = 0; k < 3; ++k) {
+      const double sigma = std::sqrt(cheap.stderr_(k) * cheap.stderr_(k) + mis.stderr_(k) * mis.stderr_(k));
+      EXPECT_NEAR(cheap.mean[k], mis.mean[k], 5 * sigma);
+      EXPECT_GT(cheap.mean[k], 0.0);
+    }
+  }
+  // With an environment emitter every point keeps MIS.
+  Scene e = w.scene;
+  e.emitters.push_back(test::constantEmitter(Color(0.1f)));
+  const test::World we(std::move(e));
+  EXPECT_EQ(we.lights->solidAngleBound(far), 4 * kPi);
+}
+
 TEST(DirectLight, PointAndDirectionalLights) {
   // Delta lights are only reachable by light sampling: compare with the analytic answer.
   Scene s;
