@@ -434,6 +434,51 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
                                       const std::vector<Lookup>& lookups, std::vector<Color>& out) {
   RadianceCache& cache = cacheFor(key);
   out.assign(pts.size(), Color(0.0f));
+  // Lambertian points (all of an irradiance cache's, in practice) take the direct path: their
+  // outgoing radiance is (ρ/π)·E(n), evaluated per point without batches, rotations or tables
+  // (RadianceCache::cosineIrradiance; equal to the kernels' interpolate + brdf_dot, tested).
+  // Everything else goes through the kernels below.
+  if (!params_.tlMode && key.order == 3) {
+    std::vector<char> direct(pts.size(), 0);
+    const auto t0 = Clock::now();
+    parallelFor(pts.size(), 256, [&](size_t b, size_t e) {
+      uint64_t contributions = 0, count = 0;
+      for (size_t i = b; i < e; ++i) {
+        const Bsdf& bsdf = *ctx_.scene.bsdfs[static_cast<size_t>(pts[i].hit.bsdf)];
+        if (!bsdf.isDiffuseOnly()) continue;
+        direct[i] = 1;
+        ++count;
+        contributions += lookups[i].entries.size();
+        const Color E = cache.cosineIrradiance(lookups[i], pts[i].frame.n, params_.gradients);
+        const Color Lo = glm::max(bsdf.eval(pts[i].wo, Vec3(0, 0, 1)) * E, Color(0.0f));
+        out[i] = isFinite(Lo) ? Lo : Color(0.0f);
+      }
+      stats_.lookups += count;
+      stats_.contributions += contributions;
+      stats_.lambertianLookups += count;
+    });
+    stats_.interpolation_s += since(t0);
+    std::vector<size_t> rest;
+    for (size_t i = 0; i < pts.size(); ++i)
+      if (!direct[i]) rest.push_back(i);
+    if (rest.empty()) return;
+    if (rest.size() < pts.size()) {
+      std::vector<ShadePoint> subPts(rest.size());
+      std::vector<Lookup> subLookups(rest.size());
+      for (size_t j = 0; j < rest.size(); ++j) subPts[j] = pts[rest[j]], subLookups[j] = lookups[rest[j]];
+      std::vector<Color> subOut;
+      interpolateWithKernels(key, subPts, subLookups, subOut);
+      for (size_t j = 0; j < rest.size(); ++j) out[rest[j]] = subOut[j];
+      return;
+    }
+  }
+  interpolateWithKernels(key, pts, lookups, out);
+}
+
+void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<ShadePoint>& pts,
+                                         const std::vector<Lookup>& lookups, std::vector<Color>& out) {
+  RadianceCache& cache = cacheFor(key);
+  out.assign(pts.size(), Color(0.0f));
   const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
   std::vector<int> remap(cache.size(), -1);
   // Interpolates the points idx (all in one frame mode) into lambda[(slot)·K...] at their

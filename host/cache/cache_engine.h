@@ -41,8 +41,9 @@ struct CacheKey {
 
 struct EngineStats {
   std::atomic<uint64_t> recordRays{0}, pathRays{0}, lookups{0}, contributions{0}, droppedSamples{0};
-  std::atomic<uint64_t> recordFrameLookups{0};
-  std::atomic<uint64_t> relaxedLookups{0};  // final-pass points covered only at the relaxed radius  // frame=auto: lookups interpolated in record frames (no full rotation)
+  std::atomic<uint64_t> recordFrameLookups{0};  // lookups interpolated in record frames (no full rotation)
+  std::atomic<uint64_t> relaxedLookups{0};      // final-pass points covered only at the relaxed radius
+  std::atomic<uint64_t> lambertianLookups{0};   // shaded by the Lambertian fast path (no kernels)
   std::atomic<uint64_t> adaptiveShrinks{0}, uncoveredRounds{0};
   double sampling_s = 0, projection_s = 0, interpolation_s = 0, dot_s = 0, adaptive_s = 0;
 };
@@ -107,6 +108,9 @@ class CacheEngine {
   std::vector<uint32_t> buildRecords(const CacheKey& key, const std::vector<ShadePoint>& cands);
   void interpolateAndShade(const CacheKey& key, const std::vector<ShadePoint>& pts, const std::vector<Lookup>& lookups,
                            std::vector<Color>& out);
+  // The batched path of interpolateAndShade: interpolate and brdf_dot kernels.
+  void interpolateWithKernels(const CacheKey& key, const std::vector<ShadePoint>& pts,
+                              const std::vector<Lookup>& lookups, std::vector<Color>& out);
   bool adaptiveCheck(const CacheKey& key, const std::vector<ShadePoint>& pts, const std::vector<Lookup>& lookups,
                      const std::vector<float>& baseLum);
   void continuePaths(const std::vector<ShadePoint>& pts, std::vector<Color>& out, float relaxedScale);

@@ -6,6 +6,7 @@
 
 #include "cache/record_weights.h"
 #include "core/error.h"
+#include "sh/sh_basis.h"
 
 namespace rc {
 
@@ -155,6 +156,38 @@ void RadianceCache::copyCoefficients(uint32_t id, bool world, float* lambda, flo
   std::memcpy(lambda, L.data() + id * k, k * sizeof(float));
   if (gradT) std::memcpy(gradT, T.data() + id * k, k * sizeof(float));
   if (gradB) std::memcpy(gradB, B.data() + id * k, k * sizeof(float));
+}
+
+Color RadianceCache::cosineIrradiance(const Lookup& lk, const Vec3& n, bool gradients) const {
+  if (!(lk.weightSum > 0.0f)) return Color(0.0f);
+  const int bands = std::min(order_, 3), used = bands * bands, n2 = order_ * order_;
+  const float zonal[3] = {kPi, 2.0f * kPi / 3.0f, kPi / 4.0f};
+  float A[9];
+  for (int l = 0; l < bands; ++l)
+    for (int m = -l; m <= l; ++m) A[l * (l + 1) + m] = zonal[l];
+  const size_t k = static_cast<size_t>(coeffsPerRecord());
+  double E[3] = {0.0, 0.0, 0.0}, sumW = 0.0;
+  std::shared_lock lock(mutex_);
+  gradients = gradients && gradT_.size() == lambda_.size() && gradB_.size() == lambda_.size();
+  for (const RcContribution& c : lk.entries) {
+    const RecordInfo& r = infos_[static_cast<size_t>(c.record)];
+    float y[9];
+    sh::evalBasis(bands, glm::dot(n, r.frame.t), glm::dot(n, r.frame.b), glm::dot(n, r.frame.n), y);
+    const float* L = lambda_.data() + k * static_cast<size_t>(c.record);
+    const float* T = gradT_.data() + k * static_cast<size_t>(c.record);
+    const float* B = gradB_.data() + k * static_cast<size_t>(c.record);
+    for (int ch = 0; ch < 3; ++ch) {
+      float e = 0.0f;
+      for (int i = 0; i < used; ++i) {
+        const size_t o = static_cast<size_t>(ch) * n2 + i;
+        const float v = gradients ? L[o] + c.dt * T[o] + c.db * B[o] : L[o];
+        e += A[i] * v * y[i];
+      }
+      E[ch] += double(c.weight) * e;
+    }
+    sumW += c.weight;
+  }
+  return Color(float(E[0] / sumW), float(E[1] / sumW), float(E[2] / sumW));
 }
 
 void RadianceCache::snapshot(std::vector<RecordInfo>& infos, std::vector<float>& lambda, std::vector<float>& gradT,

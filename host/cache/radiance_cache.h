@@ -57,6 +57,14 @@ class RadianceCache {
   // Brute-force version of lookup (tests, and a cross-check of the octree).
   void lookupBruteForce(const Vec3& p, const Vec3& n, Lookup& out, float scale = 1.0f) const;
 
+  // Lambertian fast path: the interpolated radiance's clamped-cosine convolution at normal n,
+  // E(n) = Σ_i w_i Σ_{l<3,m} Â_l (Λ_i + dt·∇tΛ_i + db·∇bΛ_i)_lm y_lm(n in record i's frame) / Σ_i w_i
+  // with Â = (π, 2π/3, π/4) (Ramamoorthi–Hanrahan). It equals interpolate (rotation into the
+  // point's frame, weighted sum) followed by brdf_dot with a Lambertian table, without either:
+  // evaluating the basis at n in each record's frame replaces the rotation. Bands ≥ 3 of
+  // higher-order records are ignored (the clamped cosine has little energy there; the order-3
+  // irradiance caches have none). Zero for an uncovered lookup.
+  Color cosineIrradiance(const Lookup& lk, const Vec3& n, bool gradients) const;
   // Adaptive caching: lower a_i (never below aMin).
   void shrinkA(uint32_t id, float newA, float aMin);
 

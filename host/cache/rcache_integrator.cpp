@@ -439,6 +439,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   stats.setText("interpolation_frame", params_.autoFrame ? "auto" : params_.worldFrame ? "world" : "record");
   stats.set("lookups_record_frame", double(es.recordFrameLookups.load()));
   stats.set("lookups_relaxed", double(es.relaxedLookups.load()));
+  stats.set("lookups_lambertian", double(es.lambertianLookups.load()));
   stats.setText("mode", params_.tlMode ? "tl (Tabellion-Lamorlette dominant direction)" : "radiance");
   stats.setJson("materials", tables.materialsJson());
   std::string skipped;
