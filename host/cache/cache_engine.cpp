@@ -74,6 +74,12 @@ int CacheEngine::technique(const ShadePoint& sp) const {
   return t;
 }
 
+bool CacheEngine::continuesPath(const ShadePoint& sp) const {
+  if (maxDepth_ >= 0 && sp.depth + 2 > maxDepth_) return false;
+  if (sp.depth >= kHardDepthLimit) return false;
+  return technique(sp) == 2;
+}
+
 CacheKey CacheEngine::keyFor(const ShadePoint& sp) const {
   CacheKey k;
   k.level = sp.level;
@@ -101,8 +107,9 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
       // a Lambertian hit skips the BSDF strategy and its ray (see directLightLightOnly); for
       // record rays its noise is averaged over the hemisphere anyway.
       const Bsdf& bsdf = *ctx_.scene.bsdfs[sp.hit.bsdf];
-      const Color L = bsdf.isDiffuseOnly() ? directLightLightOnly(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng)
-                                           : directLight(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng);
+      const Color L = continuesPath(sp)     ? lightStrategyMis(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng, sp.lightSamples)
+                      : bsdf.isDiffuseOnly() ? directLightLightOnly(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng)
+                                             : directLight(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng);
       if (isFinite(L)) out[i] = L;
     }
   });
@@ -713,6 +720,7 @@ void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<
   out.assign(n, Color(0.0f));
   std::vector<Ray> rays(n);
   std::vector<Color> weight(n, Color(0.0f));
+  std::vector<float> pdf(n, 0.0f);
   std::vector<char> alive(n, 0), delta(n, 0);
   parallelFor(n, 64, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
@@ -730,6 +738,7 @@ void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<
         w /= q;
       }
       weight[i] = w;
+      pdf[i] = s->pdf;
       alive[i] = 1;
       delta[i] = (s->lobe & kLobeDelta) ? 1 : 0;
       rays[i] = Accel::spawnRay(sp.hit, sp.frame.toWorld(s->wi));
@@ -754,7 +763,15 @@ void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<
   }
   std::vector<Color> L;
   radianceOut(next, L, relaxedScale);
-  for (size_t j = 0; j < live.size(); ++j) out[live[j]] = weight[live[j]] * L[j];
+  // The continuation ray is the point's MIS BSDF sample too (continuesPath): add the emitter it
+  // found, weighted against the point's light samples.
+  parallelFor(live.size(), 1024, [&](size_t b, size_t e) {
+    for (size_t j = b; j < e; ++j) {
+      const size_t i = live[j];
+      const Color Le = emitterMis(ctx_, pts[i].hit.p, liveRays[j].d, hits[j], pdf[i], delta[i] != 0, pts[i].lightSamples);
+      out[i] = weight[i] * (Le + L[j]);
+    }
+  });
 }
 
 }  // namespace rc

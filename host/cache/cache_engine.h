@@ -77,6 +77,11 @@ class CacheEngine {
   }
   // Technique of a point's material: 0 none, 1 cache, 2 BSDF sampling.
   int technique(const ShadePoint& sp) const;
+  // Whether indirect() continues a path from sp by BSDF sampling (technique 2 within the depth
+  // limits). Such a point takes only the light half of its direct light (lightStrategyMis): the
+  // continuation ray is also its MIS BSDF sample and adds the emitter it hits, as in the path
+  // tracer, so one ray serves both.
+  bool continuesPath(const ShadePoint& sp) const;
   CacheKey keyFor(const ShadePoint& sp) const;
 
   std::map<CacheKey, std::unique_ptr<RadianceCache>>& caches() { return caches_; }

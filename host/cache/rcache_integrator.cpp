@@ -281,9 +281,13 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
           ShadePoint& sp = prim[i].sp;
           if (sp.active && !(maxDepth >= 0 && 2 > maxDepth))
           {
+            const Bsdf& bsdf = *scene.bsdfs[sp.hit.bsdf];
+            sp.lightSamples = params_.lightSamples;
             bool lightOnly = false;
-            direct[i] = directLightCheapest(ctx, sp.hit, sp.frame, sp.wo, *scene.bsdfs[sp.hit.bsdf], rng,
-                                            params_.lightSamples, &lightOnly);
+            // Importance-sampled points: the continuation's ray doubles as the BSDF sample.
+            direct[i] = engine.continuesPath(sp)
+                            ? lightStrategyMis(ctx, sp.hit, sp.frame, sp.wo, bsdf, rng, params_.lightSamples)
+                            : directLightCheapest(ctx, sp.hit, sp.frame, sp.wo, bsdf, rng, params_.lightSamples, &lightOnly);
             if (lightOnly) ++lightOnlyCount;
           }
           continueLowDiscrepancy(sp, rng);

@@ -18,6 +18,9 @@ struct ShadePoint {
   int level = 0;         // diffuse/glossy vertices before this point
   uint64_t seed = 0;     // this point's RNG stream (Rng(seed, 1)), independent of scheduling
   int pixel = -1;        // camera pixel it came from (primary points), for AOVs
+  // Light samples this point's direct light took beside one BSDF sample: the MIS weight of the
+  // emitter its continuation ray hits (CacheEngine::continuePaths).
+  int lightSamples = 1;
   // Primary points of a low-discrepancy pixel sample: the sample's unused Sobol dimensions
   // [ldDim, Rng::kPixelLowDiscrepancyDims) serve this point's own sampling; ldDim = 0: none.
   uint32_t ldSeed = 0, ldIndex = 0, ldDim = 0;

@@ -86,11 +86,17 @@ Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorl
   return Le * powerHeuristic(bsdfPdf, n * ctx.lights.environmentPdf(dirWorld));
 }
 
-Color directLight(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal, const Bsdf& bsdf,
-                  Rng& rng, int lightSamples) {
+Color lightStrategyMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                       const Bsdf& bsdf, Rng& rng, int lightSamples) {
   Color L(0.0f);
   for (int k = 0; k < lightSamples; ++k) L += sampleLightMisN(ctx, hit, frame, woLocal, bsdf, rng, lightSamples);
   if (lightSamples > 1) L /= static_cast<float>(lightSamples);
+  return L;
+}
+
+Color directLight(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal, const Bsdf& bsdf,
+                  Rng& rng, int lightSamples) {
+  Color L = lightStrategyMis(ctx, hit, frame, woLocal, bsdf, rng, lightSamples);
   const Vec2 u = rng.next2D();
   const float uLobe = rng.nextFloat();
   if (ctx.lights.empty()) return L;

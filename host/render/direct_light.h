@@ -46,6 +46,12 @@ Color sampleLightMisN(const RenderContext& ctx, const Hit& hit, const Frame& fra
 Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorld, const Hit& next,
                  float bsdfPdf, bool delta, int lightSamples = 1);
 
+// The light-sampling half of directLight: `lightSamples` light samples averaged, MIS-weighted
+// against one BSDF sample that the caller traces itself (as its path continuation) and weights
+// with emitterMis(…, lightSamples). Consumes 3·lightSamples numbers.
+Color lightStrategyMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                       const Bsdf& bsdf, Rng& rng, int lightSamples);
+
 // Full direct light: `lightSamples` light samples (averaged) + one BSDF sample traced here +
 // emitterMis, all MIS-weighted for that sample count. Consumes 3·lightSamples + 3 numbers; with one
 // light sample it is exactly the path tracer's per-vertex estimator.
