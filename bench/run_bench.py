@@ -40,9 +40,16 @@ QUICK = dict(res=96, ref_spp=512, path_spp=[1, 4, 16, 64],
              variant_spp=8)
 
 
-def render(scene_path, out_exr, integrator, spp, res, threads, defines, stats_path):
+# The reference's seed. Pixel sample s of every render draws from a stream fixed by (seed, pixel, s),
+# so with a shared seed the first N samples of the reference would be the very samples of an N-spp
+# test image: their error against it would be understated by up to (1 - N/ref_spp)^2 and the
+# reference's own noise would cancel. A seed no test render uses keeps them independent.
+REFERENCE_SEED = 7919
+
+
+def render(scene_path, out_exr, integrator, spp, res, threads, defines, stats_path, seed=0):
     cmd = [RCACHE, scene_path, "-o", out_exr, "--integrator", integrator, "--spp", str(spp), "--quiet",
-           "--stats", stats_path, "-t", str(threads), "-D", "res=%d" % res]
+           "--stats", stats_path, "-t", str(threads), "-D", "res=%d" % res, "--seed", str(seed)]
     for k, v in defines.items():
         cmd += ["-D", "%s=%s" % (k, v)]
     # Peak memory of this child alone: wait4 returns its own rusage.
@@ -196,12 +203,12 @@ def main():
             scene_path = os.path.join(ROOT, "scenes", name + ".xml")
             work = os.path.join(args.out, name)
             os.makedirs(work, exist_ok=True)
-            key = scene_hash(scene_path, dict(res=cfg["res"], spp=cfg["ref_spp"]))
+            key = scene_hash(scene_path, dict(res=cfg["res"], spp=cfg["ref_spp"], seed=REFERENCE_SEED))
             ref = os.path.join(args.out, "ref", "%s-%s.exr" % (name, key))
             if not os.path.exists(ref):
                 print("bench: rendering reference for %s (%d spp)" % (name, cfg["ref_spp"]), file=sys.stderr, flush=True)
                 wall, _, _ = render(scene_path, ref, "path", cfg["ref_spp"], cfg["res"], args.threads, {},
-                                    os.path.join(work, "ref_stats.json"))
+                                    os.path.join(work, "ref_stats.json"), seed=REFERENCE_SEED)
                 emit(dict(scene=name, method="reference", spp=cfg["ref_spp"], time_s=wall))
             points = {"path": [], "rcache": [], "mitsuba": []}
             if mitsuba_python:

@@ -139,10 +139,9 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     }
   }
 
-  // The primary hit of one film position (camera ray, shade point, visible emission).
-  auto primaryAt = [&](const Vec2& fpos, int pixel, uint64_t sampleSeed) {
-    const Ray ray = camera.generate(fpos);
-    const Hit hit = ctx.accel.intersect(ray);
+  // The primary hit of one film position (camera ray, shade point, visible emission), from the
+  // camera ray's hit.
+  auto primaryOf = [&](const Vec2& fpos, int pixel, uint64_t sampleSeed, const Ray& ray, const Hit& hit) {
     Primary p;
     p.filmPos = fpos;
     p.sp = engine.shadePointOf(hit, ray.d, 1, 0, sampleSeed);
@@ -153,12 +152,16 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     }
     return p;
   };
-  // Primary hits of a set of film positions.
+  // Primary hits of a set of film positions (camera rays traced as coherent streams).
   auto primaries = [&](const std::vector<Vec2>& pos, const std::vector<int>& pixel, const std::vector<uint64_t>& seeds,
                        std::vector<Primary>& out) {
     out.resize(pos.size());
     parallelFor(pos.size(), 256, [&](size_t b, size_t e) {
-      for (size_t i = b; i < e; ++i) out[i] = primaryAt(pos[i], pixel[i], seeds[i]);
+      std::vector<Ray> rays(e - b);
+      std::vector<Hit> hits(e - b);
+      for (size_t i = b; i < e; ++i) rays[i - b] = camera.generate(pos[i]);
+      ctx.accel.intersect(rays.data(), hits.data(), e - b, true);
+      for (size_t i = b; i < e; ++i) out[i] = primaryOf(pos[i], pixel[i], seeds[i], rays[i - b], hits[i - b]);
     });
   };
 
@@ -266,18 +269,33 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     parallelFor(pixels, 16, [&](size_t pb, size_t pe) {
       std::vector<uint32_t> pixelReps;
       uint64_t lightOnlyCount = 0;
+      // One stream per sample: camera, then direct light, then (importance-sampled materials)
+      // the continuation's BSDF sample, all from the pixel's low-discrepancy dimensions where
+      // the sampler is ldsampler. The chunk's camera rays are traced first, as one coherent stream.
+      const size_t first = pb * spp, count = (pe - pb) * spp;
+      std::vector<Rng> rngs;
+      rngs.reserve(count);
+      std::vector<Ray> rays(count);
+      std::vector<Hit> hits(count);
+      std::vector<Vec2> fpos(count);
+      for (size_t q = pb; q < pe; ++q) {
+        const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
+        for (int s = 0; s < spp; ++s) {
+          const size_t k = q * spp + s - first;
+          rngs.push_back(pixelRng(seed, W, x, y, s, lowDiscrepancy));
+          fpos[k] = Vec2(static_cast<float>(x), static_cast<float>(y)) + rngs[k].next2D();
+          rays[k] = camera.generate(fpos[k]);
+        }
+      }
+      ctx.accel.intersect(rays.data(), hits.data(), count, true);
       for (size_t q = pb; q < pe; ++q) {
         const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
         pixelReps.clear();
         for (int s = 0; s < spp; ++s) {
-          const size_t i = q * spp + s;
-          // One stream per sample: camera, then direct light, then (importance-sampled
-          // materials) the continuation's BSDF sample, all from the pixel's low-discrepancy
-          // dimensions where the sampler is ldsampler.
-          Rng rng = pixelRng(seed, W, x, y, s, lowDiscrepancy);
-          const Vec2 f = rng.next2D();
+          const size_t i = q * spp + s, k = i - first;
+          Rng& rng = rngs[k];
           const uint64_t sseed = hashMix(seed, static_cast<uint64_t>(y) * W + x, 0xF1A1000000ULL + s);
-          prim[i] = primaryAt(Vec2(static_cast<float>(x), static_cast<float>(y)) + f, y * W + x, sseed);
+          prim[i] = primaryOf(fpos[k], y * W + x, sseed, rays[k], hits[k]);
           ShadePoint& sp = prim[i].sp;
           if (sp.active && !(maxDepth >= 0 && 2 > maxDepth))
           {

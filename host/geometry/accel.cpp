@@ -286,24 +286,35 @@ Hit sphereHit(const Sphere& s, int index, const Ray& ray, float t) {
 
 }  // namespace
 
-Hit Accel::intersect(const Ray& ray) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+namespace {
+RTCRayHit emptyRayHit(const Ray& ray) {
   RTCRayHit rh;
   rh.ray = toEmbree(ray);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  return rh;
+}
+}  // namespace
+
+Hit Accel::hitOf(const Ray& ray, unsigned geomID, unsigned primID, float u, float v, float tfar) const {
+  if (geomID == RTC_INVALID_GEOMETRY_ID) return Hit{};
+  if (geomID == impl_->sphereGeom) {
+    const int s = static_cast<int>(primID);
+    return sphereHit(scene_.spheres[s], s, ray, tfar);
+  }
+  const int m = impl_->geomToMesh[geomID];
+  return triangleHit(scene_.meshes[m], impl_->meshConstants[m], m, primID, u, v, tfar);
+}
+
+Hit Accel::intersect(const Ray& ray) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh = emptyRayHit(ray);
   rtcIntersect1(impl_->scene, &context, &rh);
   impl_->rays.add();
   impl_->check("intersect");
-  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return Hit{};
-  if (rh.hit.geomID == impl_->sphereGeom) {
-    const int s = static_cast<int>(rh.hit.primID);
-    return sphereHit(scene_.spheres[s], s, ray, rh.ray.tfar);
-  }
-  const int m = impl_->geomToMesh[rh.hit.geomID];
-  return triangleHit(scene_.meshes[m], impl_->meshConstants[m], m, rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar);
+  return hitOf(ray, rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar);
 }
 
 bool Accel::occluded(const Ray& ray) const {
@@ -316,11 +327,26 @@ bool Accel::occluded(const Ray& ray) const {
   return r.tfar < 0.0f && std::isinf(r.tfar);
 }
 
-void Accel::intersect(const Ray* rays, Hit* hits, size_t count) const {
-  // A plain loop over rtcIntersect1 for now: one code path for hit reconstruction. Embree's
-  // rtcIntersect1M stream path is the candidate if profiling of batched callers shows a gain
-  // (not measured yet).
-  for (size_t i = 0; i < count; ++i) hits[i] = intersect(rays[i]);
+void Accel::intersect(const Ray* rays, Hit* hits, size_t count, bool coherent) const {
+  if (!coherent) {
+    for (size_t i = 0; i < count; ++i) hits[i] = intersect(rays[i]);
+    return;
+  }
+  // Coherent rays (a pixel's camera rays, neighbouring pixels') go to Embree as a stream with the
+  // coherent flag: it traces them in packets, sharing the traversal.
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  constexpr size_t kStream = 256;
+  RTCRayHit rh[kStream];
+  for (size_t b = 0; b < count; b += kStream) {
+    const size_t n = std::min(kStream, count - b);
+    for (size_t i = 0; i < n; ++i) rh[i] = emptyRayHit(rays[b + i]);
+    rtcIntersect1M(impl_->scene, &context, rh, static_cast<unsigned>(n), sizeof(RTCRayHit));
+    impl_->check("intersect");
+    for (size_t i = 0; i < n; ++i) hits[b + i] = hitOf(rays[b + i], rh[i].hit.geomID, rh[i].hit.primID, rh[i].hit.u, rh[i].hit.v, rh[i].ray.tfar);
+  }
+  impl_->rays.add(count);
 }
 
 }  // namespace rc

@@ -42,8 +42,9 @@ class Accel {
 
   Hit intersect(const Ray& ray) const;
   bool occluded(const Ray& ray) const;
-  // Batched (Embree stream/packet API inside); hits[i].t = inf on miss.
-  void intersect(const Ray* rays, Hit* hits, size_t count) const;
+  // Batched; hits[i].t = inf on miss. coherent: the rays are similar (camera rays of neighbouring samples) and are traced as one
+  // Embree stream in packets; otherwise one by one.
+  void intersect(const Ray* rays, Hit* hits, size_t count, bool coherent = false) const;
 
   // Offset origin for a ray leaving surface point p with geometric normal ng toward d,
   // robust against self-intersection at any scene scale.
@@ -61,6 +62,8 @@ class Accel {
 
  private:
   struct Impl;
+  // The Hit of Embree's answer (geomID, primID, u, v, tfar) for `ray`.
+  Hit hitOf(const Ray& ray, unsigned geomID, unsigned primID, float u, float v, float tfar) const;
   const Scene& scene_;
   std::unique_ptr<Impl> impl_;
 };

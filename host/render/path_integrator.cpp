@@ -11,7 +11,8 @@
 
 namespace rc {
 
-Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings, const Ray& cameraRay, Rng& rng) {
+Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings, const Ray& cameraRay, Rng& rng,
+                   const Hit* cameraHit) {
   const Scene& scene = ctx.scene;
   const int maxDepth = settings.maxDepth;
   if (maxDepth == 0) return Color(0.0f);
@@ -22,7 +23,7 @@ Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings,
   float prevPdf = 0.0f;
   bool prevDelta = true;
   for (int depth = 0;; ++depth) {
-    const Hit hit = ctx.accel.intersect(ray);
+    const Hit hit = depth == 0 && cameraHit ? *cameraHit : ctx.accel.intersect(ray);
 
     // Emission found by this segment: full weight for the camera ray, MIS against light sampling after.
     if (depth == 0) {
@@ -86,9 +87,10 @@ class PathIntegrator final : public Integrator {
     if (loop.spp <= 0) throw Error("sampler: sample_count must be positive");
     loop.seed = ctx.scene.samplerSeed + ctx.options.seed;
     loop.lowDiscrepancy = usesLowDiscrepancy(ctx);
+    loop.cameraRay = [&](const Vec2& filmPos) { return camera.generate(filmPos); };
     loop.phase = "path";
     const RenderLoopResult result = renderSamples(ctx, film, loop, [&](const SampleInput& in, Rng& rng, TileFilm&) {
-      return pathRadiance(ctx, settings_, camera.generate(in.filmPos), rng);
+      return pathRadiance(ctx, settings_, *in.cameraRay, rng, in.cameraHit);
     });
     Image image = film.develop();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -16,5 +16,7 @@ std::unique_ptr<Integrator> makePathIntegrator(const IntegratorSettings& setting
 namespace rc {
 // Radiance along one camera ray (one path sample); the integrator's per-sample work, exposed for
 // integrators that fall back to path tracing (e.g. behind delta lobes) and for tests.
-Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings, const Ray& ray, Rng& rng);
+// cameraHit (optional): the camera ray's hit, already traced (batched camera rays).
+Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings, const Ray& ray, Rng& rng,
+                   const Hit* cameraHit = nullptr);
 }  // namespace rc

@@ -73,15 +73,39 @@ RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const Rende
   const int spp = std::max(1, settings.spp);
   RenderLoopResult result = renderTiles(ctx, film, settings, [&](TileFilm& tile) {
     uint64_t tileSamples = 0, tileNans = 0;
-    for (int py = tile.y0(); py < tile.y1(); ++py)
+    const bool batch = static_cast<bool>(settings.cameraRay);
+    std::vector<Rng> rngs;
+    std::vector<Vec2> pos;
+    std::vector<Ray> rays;
+    std::vector<Hit> hits;
+    for (int py = tile.y0(); py < tile.y1(); ++py) {
+      // The row's samples: their RNG streams and film positions, then (batch) the camera rays.
+      rngs.clear();
+      pos.clear();
       for (int px = tile.x0(); px < tile.x1(); ++px)
         for (int s = 0; s < spp; ++s) {
-          Rng rng = pixelRng(settings.seed, width, px, py, s, settings.lowDiscrepancy);
+          rngs.push_back(pixelRng(settings.seed, width, px, py, s, settings.lowDiscrepancy));
+          pos.push_back(Vec2(static_cast<float>(px), static_cast<float>(py)) + rngs.back().next2D());
+        }
+      if (batch) {
+        rays.resize(pos.size());
+        hits.resize(pos.size());
+        for (size_t k = 0; k < pos.size(); ++k) rays[k] = settings.cameraRay(pos[k]);
+        ctx.accel.intersect(rays.data(), hits.data(), rays.size(), true);
+      }
+      size_t k = 0;
+      for (int px = tile.x0(); px < tile.x1(); ++px)
+        for (int s = 0; s < spp; ++s, ++k) {
+          Rng& rng = rngs[k];
           SampleInput in;
           in.px = px;
           in.py = py;
           in.sampleIndex = s;
-          in.filmPos = Vec2(static_cast<float>(px), static_cast<float>(py)) + rng.next2D();
+          in.filmPos = pos[k];
+          if (batch) {
+            in.cameraRay = &rays[k];
+            in.cameraHit = &hits[k];
+          }
           const Color L = fn(in, rng, tile);
           if (!isFinite(L)) {
             ++tileNans;  // dropped, never splatted
@@ -90,6 +114,7 @@ RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const Rende
           tile.splat(in.filmPos, L);
           ++tileSamples;
         }
+    }
     samples += tileSamples;
     nans += tileNans;
   });

@@ -17,6 +17,7 @@ struct RenderLoopSettings {
   int spp = 1;
   uint64_t seed = 0;
   bool lowDiscrepancy = false;  // pixel samples start with their padded Sobol dimensions
+  std::function<Ray(const Vec2&)> cameraRay;  // set: trace camera rays in batches (SampleInput)
   int tileSize = 32;
   std::string phase = "render";  // progress label
 };
@@ -33,6 +34,10 @@ struct RenderLoopResult {
 struct SampleInput {
   Vec2 filmPos;
   int px, py, sampleIndex;
+  // With RenderLoopSettings::cameraRay: the sample's camera ray and its first hit, already traced
+  // (a tile row's camera rays go to the BVH as one coherent stream). Null otherwise.
+  const Ray* cameraRay = nullptr;
+  const Hit* cameraHit = nullptr;
 };
 using SampleFn = std::function<Color(const SampleInput& in, Rng& rng, TileFilm& tile)>;
 
