@@ -122,27 +122,53 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
                            float relaxedScale) {
   out.assign(pts.size(), Color(0.0f));
   if (aov) aov->assign(pts.size(), LookupAov{});
+  // Classify in parallel (technique and cache key per point), then group serially over the few
+  // distinct keys in point order: millions of record-ray hits pass through here in the fill.
+  std::vector<int8_t> tech(pts.size(), 0);
+  std::vector<CacheKey> keys(pts.size());
+  parallelFor(pts.size(), 4096, [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      const ShadePoint& sp = pts[i];
+      if (maxDepth_ >= 0 && sp.depth + 2 > maxDepth_) continue;
+      if (sp.depth >= kHardDepthLimit) continue;
+      tech[i] = static_cast<int8_t>(technique(sp));
+      if (tech[i] == 1) keys[i] = keyFor(sp);
+    }
+  });
   std::map<CacheKey, std::vector<size_t>> groups;
   std::vector<size_t> sampled;
-  for (size_t i = 0; i < pts.size(); ++i) {
-    const ShadePoint& sp = pts[i];
-    if (maxDepth_ >= 0 && sp.depth + 2 > maxDepth_) continue;
-    if (sp.depth >= kHardDepthLimit) continue;
-    const int t = technique(sp);
-    if (t == 1) groups[keyFor(sp)].push_back(i);
-    else if (t == 2) sampled.push_back(i);
+  {
+    CacheKey lastKey{};
+    std::vector<size_t>* last = nullptr;
+    for (size_t i = 0; i < pts.size(); ++i) {
+      if (tech[i] == 2) sampled.push_back(i);
+      if (tech[i] != 1) continue;
+      if (!last || keys[i] < lastKey || lastKey < keys[i]) {
+        last = &groups[keys[i]];
+        lastKey = keys[i];
+      }
+      last->push_back(i);
+    }
   }
   for (auto& [key, idx] : groups) {
     std::vector<ShadePoint> sub(idx.size());
-    for (size_t j = 0; j < idx.size(); ++j) sub[j] = pts[idx[j]];
+    parallelFor(idx.size(), 4096, [&](size_t b, size_t e) {
+      for (size_t j = b; j < e; ++j) sub[j] = pts[idx[j]];
+    });
     std::vector<Lookup> lookups;
     ensureCoverage(key, sub, lookups, nullptr, false, relaxedScale);
     std::vector<Color> L;
     interpolateAndShade(key, sub, lookups, L);
     RadianceCache& cache = cacheFor(key);
+    if (!aov) {
+      parallelFor(idx.size(), 4096, [&](size_t b, size_t e) {
+        for (size_t j = b; j < e; ++j) out[idx[j]] = L[j];
+      });
+      continue;
+    }
     for (size_t j = 0; j < idx.size(); ++j) {
       out[idx[j]] = L[j];
-      if (aov) {
+      {
         LookupAov& a = (*aov)[idx[j]];
         a.contributors = static_cast<int>(lookups[j].entries.size());
         for (const auto& e : lookups[j].entries) {
@@ -159,7 +185,9 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
   }
   if (!sampled.empty()) {
     std::vector<ShadePoint> sub(sampled.size());
-    for (size_t j = 0; j < sampled.size(); ++j) sub[j] = pts[sampled[j]];
+    parallelFor(sampled.size(), 4096, [&](size_t b, size_t e) {
+      for (size_t j = b; j < e; ++j) sub[j] = pts[sampled[j]];
+    });
     std::vector<Color> L;
     // Paths continued below a sharp surface keep the relaxed lookups of the final pass.
     continuePaths(sub, L, relaxedScale);
@@ -343,10 +371,12 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
 
   pb.radiance.resize(total * 3);
   pb.distance.resize(total);
-  for (size_t i = 0; i < total; ++i) {
-    for (int c = 0; c < 3; ++c) pb.radiance[3 * i + c] = L[i][c];
-    pb.distance[i] = hits[i].valid() ? hits[i].t : 0.0f;
-  }
+  parallelFor(total, 16384, [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      for (int c = 0; c < 3; ++c) pb.radiance[3 * i + c] = L[i][c];
+      pb.distance[i] = hits[i].valid() ? hits[i].t : 0.0f;
+    }
+  });
   ProjectResult pr;
   auto t0 = Clock::now();
   ctx_.backend->project(pb, pr);
