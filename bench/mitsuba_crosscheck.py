@@ -32,6 +32,7 @@ Images are kept in --outdir (default /tmp/rcache_mitsuba_xcheck) for inspection:
 import argparse
 import json
 import os
+import re
 import subprocess
 import sys
 import time
@@ -68,6 +69,11 @@ def main():
     ap.add_argument("--seeds", type=int, nargs=2, default=[1, 2])
     ap.add_argument("--outdir", default="/tmp/rcache_mitsuba_xcheck")
     ap.add_argument("--define", "-D", action="append", default=[], help="extra scene parameter name=value (both renderers)")
+    ap.add_argument("--mitsuba-sampler", default="independent",
+                    help="sampler Mitsuba renders with (the scene's own: 'scene'). Default independent: Mitsuba "
+                         "3.9.1's ldsampler measured 0.5%% darker than its own independent sampler on "
+                         "cornell_glossy (64², 16384 vs 4096 spp), while rcache's independent and ldsampler "
+                         "both match Mitsuba's independent")
     args = ap.parse_args()
 
     import mitsuba as mi
@@ -79,9 +85,22 @@ def main():
         scene_path = os.path.join(args.scenes_dir, name + ".xml")
         params = {"res": args.res, "spp": args.spp_mitsuba, **extra}
 
-        # Mitsuba reference (its own thread pool, one thread per core).
+        # Mitsuba reference (its own thread pool, one thread per core), from a copy of the scene file
+        # next to it (relative mesh paths) with the sampler type replaced.
         t0 = time.time()
-        scene = mi.load_file(scene_path, **params)
+        load_path = scene_path
+        if args.mitsuba_sampler != "scene":
+            with open(scene_path) as f:
+                text = f.read()
+            text = re.sub(r'<sampler type="[a-z]+">', '<sampler type="%s">' % args.mitsuba_sampler, text)
+            load_path = os.path.join(os.path.dirname(scene_path), ".xcheck_" + name + ".xml")
+            with open(load_path, "w") as f:
+                f.write(text)
+        try:
+            scene = mi.load_file(load_path, **params)
+        finally:
+            if load_path != scene_path:
+                os.remove(load_path)
         img = mi.render(scene, spp=args.spp_mitsuba, seed=0)
         ref_path = os.path.join(args.outdir, name + "_mitsuba.exr")
         mi.Bitmap(img).write(ref_path)

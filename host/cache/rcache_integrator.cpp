@@ -297,8 +297,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
           const uint64_t sseed = hashMix(seed, static_cast<uint64_t>(y) * W + x, 0xF1A1000000ULL + s);
           prim[i] = primaryOf(fpos[k], y * W + x, sseed, rays[k], hits[k]);
           ShadePoint& sp = prim[i].sp;
-          if (sp.active && !(maxDepth >= 0 && 2 > maxDepth))
-          {
+          if (sp.active && !(maxDepth >= 0 && 2 > maxDepth)) {
             const Bsdf& bsdf = *scene.bsdfs[sp.hit.bsdf];
             sp.lightSamples = params_.lightSamples;
             bool lightOnly = false;
