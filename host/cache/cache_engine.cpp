@@ -150,7 +150,10 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
       last->push_back(i);
     }
   }
-  for (auto& [key, idx] : groups) {
+  for (auto& group : groups) {
+    // Named references, not a structured binding: C++17 lambdas cannot capture those (clang).
+    const CacheKey& key = group.first;
+    const std::vector<size_t>& idx = group.second;
     std::vector<ShadePoint> sub(idx.size());
     parallelFor(idx.size(), 4096, [&](size_t b, size_t e) {
       for (size_t j = b; j < e; ++j) sub[j] = pts[idx[j]];
