@@ -211,6 +211,10 @@ LightSampler::~LightSampler() = default;
 float LightSampler::solidAngleBound(const Vec3& p) const {
   const Impl& im = *impl_;
   if (!im.infinite.empty()) return 4.0f * kPi;
+  // Called per shading point: with many emitters (a mesh per emissive panel of a big room) the sum
+  // would cost more than the ray it saves, so beyond kMaxBoundedEmitters the answer is "not small".
+  constexpr size_t kMaxBoundedEmitters = 16;
+  if (im.entries.size() > kMaxBoundedEmitters) return 4.0f * kPi;
   float total = 0.0f;
   for (const Entry& e : im.entries) {
     if (e.type != EmitterType::Area) continue;  // point and directional lights subtend none

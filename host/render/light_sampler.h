@@ -43,7 +43,7 @@ class LightSampler {
   float environmentPdf(const Vec3& dir) const;
   bool hasEnvironment() const;
   // An upper bound of the solid angle the emitters subtend from p (the area emitters' bounding
-  // spheres; 4π with an infinite emitter or from inside a bound). Lets a caller skip the BSDF
+  // spheres; 4π with an infinite emitter, from inside a bound, or with more than 16 emitters). Lets a caller skip the BSDF
   // strategy of MIS where the lights are small: there light sampling alone is nearly optimal.
   float solidAngleBound(const Vec3& p) const;
 

@@ -219,6 +219,15 @@ TEST(DirectLight, CheapestChoosesLightOnlyUnderSmallLightsOnly) {
   e.emitters.push_back(test::constantEmitter(Color(0.1f)));
   const test::World we(std::move(e));
   EXPECT_EQ(we.lights->solidAngleBound(far), 4 * kPi);
+  // Many emitters: not summed per point (bounded cost), answered conservatively.
+  Scene many = w.scene;
+  for (int k = 0; k < 20; ++k) {
+    const int em = test::addEmitter(many, test::areaEmitter(Color(1.0f)));
+    const float x = -4.5f + 0.4f * k;
+    many.meshes.push_back(test::quad({x, 4, 3}, {x, 4.1f, 3}, {x + 0.1f, 4.1f, 3}, {x + 0.1f, 4, 3}, white, em));
+  }
+  const test::World wm(std::move(many));
+  EXPECT_EQ(wm.lights->solidAngleBound(far), 4 * kPi);
 }
 
 TEST(DirectLight, PointAndDirectionalLights) {
