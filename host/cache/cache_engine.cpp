@@ -74,11 +74,11 @@ int CacheEngine::technique(const ShadePoint& sp) const {
   return t;
 }
 
-bool CacheEngine::continuesPath(const ShadePoint& sp) const {
-  if (maxDepth_ >= 0 && sp.depth + 2 > maxDepth_) return false;
-  if (sp.depth >= kHardDepthLimit) return false;
-  return technique(sp) == 2;
+bool CacheEngine::hasIndirect(const ShadePoint& sp) const {
+  return !(maxDepth_ >= 0 && sp.depth + 2 > maxDepth_) && sp.depth < kHardDepthLimit;
 }
+
+bool CacheEngine::continuesPath(const ShadePoint& sp) const { return hasIndirect(sp) && technique(sp) == 2; }
 
 CacheKey CacheEngine::keyFor(const ShadePoint& sp) const {
   CacheKey k;
@@ -129,8 +129,7 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
   parallelFor(pts.size(), 4096, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& sp = pts[i];
-      if (maxDepth_ >= 0 && sp.depth + 2 > maxDepth_) continue;
-      if (sp.depth >= kHardDepthLimit) continue;
+      if (!hasIndirect(sp)) continue;
       tech[i] = static_cast<int8_t>(technique(sp));
       if (tech[i] == 1) keys[i] = keyFor(sp);
     }
@@ -162,27 +161,22 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
     ensureCoverage(key, sub, lookups, nullptr, false, relaxedScale);
     std::vector<Color> L;
     interpolateAndShade(key, sub, lookups, L);
+    parallelFor(idx.size(), 4096, [&](size_t b, size_t e) {
+      for (size_t j = b; j < e; ++j) out[idx[j]] = L[j];
+    });
+    if (!aov) continue;
     RadianceCache& cache = cacheFor(key);
-    if (!aov) {
-      parallelFor(idx.size(), 4096, [&](size_t b, size_t e) {
-        for (size_t j = b; j < e; ++j) out[idx[j]] = L[j];
-      });
-      continue;
-    }
     for (size_t j = 0; j < idx.size(); ++j) {
-      out[idx[j]] = L[j];
-      {
-        LookupAov& a = (*aov)[idx[j]];
-        a.contributors = static_cast<int>(lookups[j].entries.size());
-        for (const auto& e : lookups[j].entries) {
-          const RecordInfo r = cache.info(static_cast<uint32_t>(e.record));
-          a.meanA += r.a;
-          a.meanRadiusPx += r.a * r.R / footprint(r.p);
-        }
-        if (a.contributors > 0) {
-          a.meanA /= a.contributors;
-          a.meanRadiusPx /= a.contributors;
-        }
+      LookupAov& a = (*aov)[idx[j]];
+      a.contributors = static_cast<int>(lookups[j].entries.size());
+      for (const auto& e : lookups[j].entries) {
+        const RecordInfo r = cache.info(static_cast<uint32_t>(e.record));
+        a.meanA += r.a;
+        a.meanRadiusPx += r.a * r.R / footprint(r.p);
+      }
+      if (a.contributors > 0) {
+        a.meanA /= a.contributors;
+        a.meanRadiusPx /= a.contributors;
       }
     }
   }
@@ -479,14 +473,14 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
   // (RadianceCache::cosineIrradiance; equal to the kernels' interpolate + brdf_dot, tested).
   // Everything else goes through the kernels below.
   if (!params_.tlMode && key.order == 3) {
-    std::vector<char> direct(pts.size(), 0);
+    std::vector<char> lambertian(pts.size(), 0);
     const auto t0 = Clock::now();
     parallelFor(pts.size(), 256, [&](size_t b, size_t e) {
       uint64_t contributions = 0, count = 0;
       for (size_t i = b; i < e; ++i) {
         const Bsdf& bsdf = *ctx_.scene.bsdfs[static_cast<size_t>(pts[i].hit.bsdf)];
         if (!bsdf.isDiffuseOnly()) continue;
-        direct[i] = 1;
+        lambertian[i] = 1;
         ++count;
         contributions += lookups[i].entries.size();
         const Color E = cache.cosineIrradiance(lookups[i], pts[i].frame.n, params_.gradients);
@@ -500,7 +494,7 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
     stats_.interpolation_s += since(t0);
     std::vector<size_t> rest;
     for (size_t i = 0; i < pts.size(); ++i)
-      if (!direct[i]) rest.push_back(i);
+      if (!lambertian[i]) rest.push_back(i);
     if (rest.empty()) return;
     if (rest.size() < pts.size()) {
       std::vector<ShadePoint> subPts(rest.size());

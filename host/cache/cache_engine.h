@@ -82,6 +82,8 @@ class CacheEngine {
   // continuation ray is also its MIS BSDF sample and adds the emitter it hits, as in the path
   // tracer, so one ray serves both.
   bool continuesPath(const ShadePoint& sp) const;
+  // Whether indirect() gives sp any indirect light at all (max_depth and the hard depth limit).
+  bool hasIndirect(const ShadePoint& sp) const;
   CacheKey keyFor(const ShadePoint& sp) const;
 
   std::map<CacheKey, std::unique_ptr<RadianceCache>>& caches() { return caches_; }

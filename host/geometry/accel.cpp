@@ -344,7 +344,10 @@ void Accel::intersect(const Ray* rays, Hit* hits, size_t count, bool coherent) c
     for (size_t i = 0; i < n; ++i) rh[i] = emptyRayHit(rays[b + i]);
     rtcIntersect1M(impl_->scene, &context, rh, static_cast<unsigned>(n), sizeof(RTCRayHit));
     impl_->check("intersect");
-    for (size_t i = 0; i < n; ++i) hits[b + i] = hitOf(rays[b + i], rh[i].hit.geomID, rh[i].hit.primID, rh[i].hit.u, rh[i].hit.v, rh[i].ray.tfar);
+    for (size_t i = 0; i < n; ++i) {
+      const RTCHit& h = rh[i].hit;
+      hits[b + i] = hitOf(rays[b + i], h.geomID, h.primID, h.u, h.v, rh[i].ray.tfar);
+    }
   }
   impl_->rays.add(count);
 }

@@ -42,8 +42,8 @@ class Accel {
 
   Hit intersect(const Ray& ray) const;
   bool occluded(const Ray& ray) const;
-  // Batched; hits[i].t = inf on miss. coherent: the rays are similar (camera rays of neighbouring samples) and are traced as one
-  // Embree stream in packets; otherwise one by one.
+  // Batched; hits[i].t = inf on miss. coherent: the rays are similar (camera rays of
+  // neighbouring samples) and go to Embree as one stream, traced in packets; otherwise one by one.
   void intersect(const Ray* rays, Hit* hits, size_t count, bool coherent = false) const;
 
   // Offset origin for a ray leaving surface point p with geometric normal ng toward d,

@@ -46,16 +46,6 @@ Color lightSampleContribution(const RenderContext& ctx, const Hit& hit, const Fr
 }
 }  // namespace
 
-Color sampleLightMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
-                     const Bsdf& bsdf, Rng& rng) {
-  return lightSampleContribution(ctx, hit, frame, woLocal, bsdf, rng, 1);
-}
-
-Color sampleLightMisN(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
-                      const Bsdf& bsdf, Rng& rng, int lightSamples) {
-  return lightSampleContribution(ctx, hit, frame, woLocal, bsdf, rng, std::max(1, lightSamples));
-}
-
 Color directLightLightOnly(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
                            const Bsdf& bsdf, Rng& rng) {
   return lightSampleContribution(ctx, hit, frame, woLocal, bsdf, rng, 0);
@@ -88,8 +78,10 @@ Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorl
 
 Color lightStrategyMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
                        const Bsdf& bsdf, Rng& rng, int lightSamples) {
+  lightSamples = std::max(1, lightSamples);
   Color L(0.0f);
-  for (int k = 0; k < lightSamples; ++k) L += sampleLightMisN(ctx, hit, frame, woLocal, bsdf, rng, lightSamples);
+  for (int k = 0; k < lightSamples; ++k)
+    L += lightSampleContribution(ctx, hit, frame, woLocal, bsdf, rng, lightSamples);
   if (lightSamples > 1) L /= static_cast<float>(lightSamples);
   return L;
 }

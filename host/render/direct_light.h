@@ -3,9 +3,10 @@
 // BSDF sampling, power heuristic). The path tracer and the radiance-cache integrator call the very
 // same functions, so their direct light is the same estimator.
 //
-// The estimator is split in two so the path tracer can reuse its continuation ray for the BSDF
-// strategy (as Mitsuba's `path` does):
-//   sampleLightMis   — light-sampling strategy, MIS-weighted against the BSDF pdf;
+// The estimator is split in two so a caller that continues the path (the path tracer as Mitsuba's
+// `path` does, rcache below importance-sampled surfaces) reuses its continuation ray for the BSDF
+// strategy:
+//   lightStrategyMis — light-sampling strategy, MIS-weighted against the BSDF pdf;
 //   emitterMis       — what a BSDF-sampled ray that found `next` (or escaped) adds, MIS-weighted
 //                      against the light pdf (weight 1 after a delta lobe).
 // directLight() runs both (tracing its own BSDF ray) for callers that do not continue the path.
@@ -31,14 +32,6 @@ inline float powerHeuristic(float pdfA, float pdfB) {
   return a / (a + b);
 }
 
-// Light-sampling strategy at `hit`: one light sample, one shadow ray. Consumes 3 random numbers.
-Color sampleLightMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
-                     const Bsdf& bsdf, Rng& rng);
-// The same, as one of `lightSamples` light samples taken beside one BSDF sample (MIS weight
-// against lightSamples·pdf_light; the caller averages the light samples).
-Color sampleLightMisN(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
-                      const Bsdf& bsdf, Rng& rng, int lightSamples);
-
 // BSDF-sampling strategy's contribution once the sampled ray (from `from`, world direction `dirWorld`)
 // found `next` (next.valid() false = escaped to the environment). `bsdfPdf` is the continuous pdf of
 // the sample (ignored when `delta`). Returns the MIS-weighted emitted radiance (not multiplied by
@@ -46,9 +39,11 @@ Color sampleLightMisN(const RenderContext& ctx, const Hit& hit, const Frame& fra
 Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorld, const Hit& next,
                  float bsdfPdf, bool delta, int lightSamples = 1);
 
-// The light-sampling half of directLight: `lightSamples` light samples averaged, MIS-weighted
-// against one BSDF sample that the caller traces itself (as its path continuation) and weights
-// with emitterMis(…, lightSamples). Consumes 3·lightSamples numbers.
+// The light-sampling half of directLight: `lightSamples` light samples (one shadow ray each)
+// averaged, MIS-weighted (power heuristic on lightSamples·pdf_light vs pdf_bsdf, Veach's
+// multi-sample MIS) against one BSDF sample that the caller traces itself — the path tracer's and
+// rcache's path continuation — and weights with emitterMis(…, lightSamples). Consumes
+// 3·lightSamples numbers.
 Color lightStrategyMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
                        const Bsdf& bsdf, Rng& rng, int lightSamples);
 

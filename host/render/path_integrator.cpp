@@ -40,7 +40,7 @@ Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings,
     const Frame frame = hit.frame();
     const Vec3 wo = frame.toLocal(-ray.d);
 
-    L += throughput * sampleLightMis(ctx, hit, frame, wo, bsdf, rng);
+    L += throughput * lightStrategyMis(ctx, hit, frame, wo, bsdf, rng, 1);
 
     const Vec2 u = rng.next2D();
     const float uLobe = rng.nextFloat();
