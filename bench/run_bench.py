@@ -27,7 +27,8 @@ RCACHE = os.path.join(ROOT, "build", "rcache")
 # and the materials rcache path traces (too sharp for the cache).
 SCENES = ["cornell_glossy", "glossy_sweep", "aniso_sphere", "curved_glossy", "cornell_diffuse"]
 FULL = dict(res=512, ref_spp=4096, path_spp=[4, 8, 16, 32, 64, 128, 256],
-            rcache=[(dict(), 4), (dict(), 16), (dict(), 64), (dict(), 256), (dict(rays=256, a=0.5), 16),
+            rcache=[(dict(), 4), (dict(), 8), (dict(), 16), (dict(), 32), (dict(), 64), (dict(), 128), (dict(), 256),
+                    (dict(rays=256, a=0.5), 16),
                     (dict(rays=256, a=0.5), 64), (dict(rays=1024, a=0.3), 64)],
             variants=[("adaptive=true", {"adaptive": "true"}), ("gradients=false", {"gradients": "false"}),
                       ("frame=world", {"frame": "world"}), ("mode=tl", {"mode": "tl"})],

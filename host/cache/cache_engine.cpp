@@ -25,6 +25,9 @@ constexpr size_t kChunk = 4096;
 // Paths longer than this are cut (only reachable through chains of delta lobes that Russian
 // roulette has not yet ended; probability < 0.95^990).
 constexpr int kHardDepthLimit = 1000;
+// A record ray's hit starts its low-discrepancy dimensions at the second pair (ShadePoint::ldDim
+// = 0 means "none"; the pairs are scrambled independently, so skipping one costs nothing).
+constexpr uint32_t kRecordLowDiscrepancyFirstDim = 2;
 
 void frameRows(const Frame& f, float* out) {
   const Vec3 rows[3] = {f.t, f.b, f.n};
@@ -102,12 +105,15 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
       const ShadePoint& sp = pts[i];
       if (!sp.active) continue;
       if (maxDepth_ >= 0 && sp.depth + 1 > maxDepth_) continue;
-      Rng rng(sp.seed, 1);
       // Secondary hits (of record rays, or of continuations below importance-sampled surfaces):
       // a Lambertian hit skips the BSDF strategy and its ray (see directLightLightOnly); for
-      // record rays its noise is averaged over the hemisphere anyway.
+      // record rays its noise is averaged over the hemisphere anyway. A record ray's hit draws
+      // its light sample from the record's low-discrepancy sequence (buildRecords), unless its
+      // path continues: continuePaths starts that point's sequence afresh for the BSDF sample.
+      const bool continues = continuesPath(sp);
+      Rng rng = continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1);
       const Bsdf& bsdf = *ctx_.scene.bsdfs[sp.hit.bsdf];
-      const Color L = continuesPath(sp)     ? lightStrategyMis(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng, sp.lightSamples)
+      const Color L = continues             ? lightStrategyMis(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng, sp.lightSamples)
                       : bsdf.isDiffuseOnly() ? directLightLightOnly(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng)
                                              : directLight(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng);
       if (isFinite(L)) out[i] = L;
@@ -359,6 +365,12 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
       const ShadePoint& c = cands[i / S];
       const Hit& h = hits[i];
       next[i] = shadePointOf(h, rays[i].d, c.depth + 1, c.level + 1, hashMix(c.seed, i % S, 0x5EED));
+      // The light samples at a record's S hits are one padded Sobol sequence (index = ray): like
+      // the ray directions they are stratified over the record, so the record's estimate of
+      // direct light at its neighbours converges faster than with independent samples.
+      next[i].ldSeed = static_cast<uint32_t>(hashMix(c.seed, 0x1D5EED));
+      next[i].ldIndex = static_cast<uint32_t>(i % S);
+      next[i].ldDim = kRecordLowDiscrepancyFirstDim;
     }
   });
   std::vector<Color> L;
