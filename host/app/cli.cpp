@@ -120,6 +120,8 @@ int runRender(const std::vector<std::string>& args) {
   RenderOptions opts;
   opts.spp = ra.spp;
   opts.sampler = ra.sampler;
+  opts.adaptive.threshold = ra.adaptiveThreshold;
+  opts.adaptive.maxSpp = ra.maxSpp;
   opts.seed = ra.seed;
   opts.quiet = ra.quiet;
   opts.aovs = ra.aovs;

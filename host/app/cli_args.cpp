@@ -1,6 +1,7 @@
 #include "app/cli_args.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 
 #include "core/error.h"
@@ -11,7 +12,8 @@ const char* usageText() {
   return "usage:\n"
          "  rcache SCENE.xml [-o out.exr|png|hdr] [-D name=value]... [--integrator auto|rcache|path]\n"
          "                   [--spp N] [--device cpu|opencl|opencl:P:D] [-t THREADS] [--seed S] [--quiet]\n"
-         "                   [--sampler independent|ldsampler] [--stats out.json] [--aov records,radius,technique,contributors]\n"
+         "                   [--sampler independent|ldsampler] [--adaptive T] [--max-spp N]\n"
+         "                   [--stats out.json] [--aov records,radius,technique,contributors]\n"
          "                   [--cache-save F] [--cache-load F] [--lenient]\n"
          "  rcache devices                       list OpenCL platforms and devices\n"
          "  rcache verify [--device D] [--order N]   kernels vs scalar reference\n"
@@ -24,6 +26,17 @@ long long parseInteger(const std::string& flag, const std::string& text, long lo
   const long long v = std::strtoll(text.c_str(), &end, 10);
   if (text.empty() || *end != '\0' || errno == ERANGE)
     throw Error(flag + ": expected an integer, got '" + text + "'");
+  if (v < lo || v > hi)
+    throw Error(flag + ": " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return v;
+}
+
+double parseReal(const std::string& flag, const std::string& text, double lo, double hi) {
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+    throw Error(flag + ": expected a number, got '" + text + "'");
   if (v < lo || v > hi)
     throw Error(flag + ": " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
   return v;
@@ -90,6 +103,10 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
       r.sampler = cur.value(a);
       if (r.sampler != "independent" && r.sampler != "ldsampler")
         throw Error("--sampler: expected independent or ldsampler, got '" + r.sampler + "'");
+    } else if (a == "--adaptive") {
+      r.adaptiveThreshold = parseReal(a, cur.value(a), 1e-6, 10.0);
+    } else if (a == "--max-spp") {
+      r.maxSpp = static_cast<int>(parseInteger(a, cur.value(a), 1, 1 << 20));
     } else if (a == "--quiet" || a == "-q") {
       r.quiet = true;
     } else if (a == "--lenient") {
@@ -115,6 +132,9 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
     }
   }
   if (r.scenePath.empty()) throw Error("no scene file given");
+  if (r.maxSpp > 0 && r.adaptiveThreshold <= 0.0f) throw Error("--max-spp: only with --adaptive T");
+  if (r.maxSpp > 0 && r.spp > 0 && r.maxSpp < r.spp)
+    throw Error("--max-spp: " + std::to_string(r.maxSpp) + " is below --spp " + std::to_string(r.spp));
   return r;
 }
 

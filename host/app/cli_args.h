@@ -18,6 +18,8 @@ struct RenderArgs {
   int threads = 0;                             // 0 → all hardware threads
   uint64_t seed = 0;
   std::string sampler;                         // "" → scene's <sampler>
+  float adaptiveThreshold = 0.0f;              // --adaptive T: per-pixel relative error target (0 = off)
+  int maxSpp = 0;                              // --max-spp N: cap of adaptive sampling (0 → 16 × spp)
   bool quiet = false;
   bool lenient = false;
   std::string statsPath;
@@ -41,6 +43,7 @@ VerifyArgs parseVerifyArgs(const std::vector<std::string>& args);
 
 // Strict number parsing shared by the parsers: the whole string must be a number in [lo, hi].
 long long parseInteger(const std::string& flag, const std::string& text, long long lo, long long hi);
+double parseReal(const std::string& flag, const std::string& text, double lo, double hi);
 
 const char* usageText();
 

@@ -254,11 +254,17 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     for (auto& [k, c] : engine.caches()) n += c->size();
     return n;
   };
-  auto renderBand = [&](int band) {
-    const int y0 = band * rowsPerBand, y1 = std::min(H, y0 + rowsPerBand);
-    const size_t pixels = static_cast<size_t>(y1 - y0) * W, n = pixels * static_cast<size_t>(spp);
+  // Round 0 of every pixel is [0, spp); adaptive sampling adds rounds for the pixels that need them.
+  AdaptivePixels adaptive(W, H, spp, ctx.options.adaptive);
+  // Shades the samples ranges[q] of the pixels q of rows [y0, y0 + pixels / W) into `tile`.
+  auto shadeSamples = [&](int y0, const SampleRange* ranges, size_t pixels, TileFilm& tile) {
+    std::vector<size_t> offset(pixels + 1, 0);
+    for (size_t q = 0; q < pixels; ++q) offset[q + 1] = offset[q] + static_cast<size_t>(ranges[q].count());
+    const size_t n = offset[pixels];
+    if (n == 0) return;
     std::vector<Primary> prim(n);
     std::vector<Color> direct(n, Color(0.0f));
+    std::vector<int> sampleIndex(n);
     // Cached indirect light is smooth (the cache itself interpolates over ≥ r_min pixels), so
     // the samples of one pixel that land on the same surface share one lookup at the first of
     // them; direct light, emission and importance-sampled (sharp) materials stay per sample, so
@@ -272,7 +278,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
       // One stream per sample: camera, then direct light, then (importance-sampled materials)
       // the continuation's BSDF sample, all from the pixel's low-discrepancy dimensions where
       // the sampler is ldsampler. The chunk's camera rays are traced first, as one coherent stream.
-      const size_t first = pb * spp, count = (pe - pb) * spp;
+      const size_t first = offset[pb], count = offset[pe] - offset[pb];
       std::vector<Rng> rngs;
       rngs.reserve(count);
       std::vector<Ray> rays(count);
@@ -280,8 +286,8 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
       std::vector<Vec2> fpos(count);
       for (size_t q = pb; q < pe; ++q) {
         const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
-        for (int s = 0; s < spp; ++s) {
-          const size_t k = q * spp + s - first;
+        for (int s = ranges[q].first; s < ranges[q].end; ++s) {
+          const size_t k = offset[q] + (s - ranges[q].first) - first;
           rngs.push_back(pixelRng(seed, W, x, y, s, lowDiscrepancy));
           fpos[k] = Vec2(static_cast<float>(x), static_cast<float>(y)) + rngs[k].next2D();
           rays[k] = camera.generate(fpos[k]);
@@ -291,8 +297,9 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
       for (size_t q = pb; q < pe; ++q) {
         const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
         pixelReps.clear();
-        for (int s = 0; s < spp; ++s) {
-          const size_t i = q * spp + s, k = i - first;
+        for (int s = ranges[q].first; s < ranges[q].end; ++s) {
+          const size_t i = offset[q] + (s - ranges[q].first), k = i - first;
+          sampleIndex[i] = s;
           Rng& rng = rngs[k];
           const uint64_t sseed = hashMix(seed, static_cast<uint64_t>(y) * W + x, 0xF1A1000000ULL + s);
           prim[i] = primaryOf(fpos[k], y * W + x, sseed, rays[k], hits[k]);
@@ -337,16 +344,19 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     std::vector<Color> repInd;
     std::vector<LookupAov> repAov;
     engine.indirect(repPts, repInd, &repAov, kFinalRelaxedScale);
-    auto tile = std::make_unique<TileFilm>(film.makeTile(0, y0, W, y1));
     for (size_t i = 0; i < n; ++i) {
       const ShadePoint& sp = prim[i].sp;
       const LookupAov& la = repAov[slot[rep[i]]];
       const Color L = prim[i].Le + direct[i] + repInd[slot[rep[i]]];
       const int px = sp.pixel % W, py = sp.pixel / W;
-      if (isFinite(L)) tile->splat(prim[i].filmPos, L);
-      else ++nanSamples;
-      if (aovRadius) tile->addAov("radius", px, py, Color(la.meanA, la.meanRadiusPx, 0.0f));
-      if (aovContrib) tile->addAov("contributors", px, py, Color(float(la.contributors)));
+      if (isFinite(L)) {
+        tile.splat(prim[i].filmPos, L);
+        adaptive.add(static_cast<size_t>(sp.pixel), sampleIndex[i], L);
+      } else {
+        ++nanSamples;
+      }
+      if (aovRadius) tile.addAov("radius", px, py, Color(la.meanA, la.meanRadiusPx, 0.0f));
+      if (aovContrib) tile.addAov("contributors", px, py, Color(float(la.contributors)));
       if (aovTech) {
         // red: BSDF sampling, green: irradiance cache (diffuse), blue: radiance cache (glossy)
         Color c(0.0f);
@@ -356,9 +366,17 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
           const auto& plan = tables.plans()[sp.hit.bsdf];
           c = plan.technique == kTechniqueIrradianceCache ? Color(0, 1, 0) : Color(0, 0, 1);
         }
-        tile->addAov("technique", px, py, c);
+        tile.addAov("technique", px, py, c);
       }
     }
+  };
+  // A band's first spp samples per pixel (adaptive rounds come after all bands).
+  auto renderBand = [&](int band) {
+    const int y0 = band * rowsPerBand, y1 = std::min(H, y0 + rowsPerBand);
+    const size_t begin = static_cast<size_t>(y0) * W, end = static_cast<size_t>(y1) * W;
+    auto tile = std::make_unique<TileFilm>(film.makeTile(0, y0, W, y1));
+    adaptive.restart(begin, end);
+    shadeSamples(y0, adaptive.ranges().data() + begin, end - begin, *tile);
     bandFilms[static_cast<size_t>(band)] = std::move(tile);
   };
   // A band shaded before records were created elsewhere may have missed them; it is shaded again
@@ -383,8 +401,35 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     }
     if (!any) break;
   }
+  // Adaptive sampling: rounds over the bands that hold pixels needing more samples. Should a
+  // round create records (a new sample position found no record even with the relaxed lookup),
+  // every band is shaded again with the final caches and the rounds start over, once.
+  std::vector<std::unique_ptr<TileFilm>> adaptiveFilms;
+  for (int attempt = 0; attempt < 2 && !interrupted; ++attempt) {
+    const size_t recordsBefore = totalRecords();
+    adaptiveFilms.clear();
+    for (int round = 1; !interrupted && adaptive.nextRound(); ++round)
+      for (int band = 0; band < bands; ++band) {
+        if (cancelled()) {
+          interrupted = true;
+          break;
+        }
+        const int y0 = band * rowsPerBand, y1 = std::min(H, y0 + rowsPerBand);
+        const size_t begin = static_cast<size_t>(y0) * W, end = static_cast<size_t>(y1) * W;
+        const SampleRange* r = adaptive.ranges().data();
+        if (std::all_of(r + begin, r + end, [](const SampleRange& x) { return x.count() == 0; })) continue;
+        auto tile = std::make_unique<TileFilm>(film.makeTile(0, y0, W, y1));
+        shadeSamples(y0, r + begin, end - begin, *tile);
+        adaptiveFilms.push_back(std::move(tile));
+        if (ctx.progress) ctx.progress("render (adaptive " + std::to_string(round) + ")", double(band + 1), double(bands));
+      }
+    if (interrupted || totalRecords() == recordsBefore) break;
+    for (int band = 0; band < bands; ++band) renderBand(band);
+    reshaded += bands;
+  }
   for (auto& t : bandFilms)
     if (t) film.merge(*t);
+  for (auto& t : adaptiveFilms) film.merge(*t);
   const double finalS = since(t0);
 
   Image img = film.develop();
@@ -439,6 +484,8 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   stats.setJson("caches", cj.str());
   stats.set("rays_record", double(es.recordRays.load()));
   stats.set("rays_camera", double(cameraRays));
+  reportAdaptiveSampling(stats, ctx.options.adaptive, spp, adaptive.totalSamples(), adaptive.pixelsAboveSpp(),
+                         adaptive.maxSamples(), double(W) * H);
   stats.set("rays_path", double(es.pathRays.load()));
   stats.set("rays_total", double(ctx.accel.raysTraced()));
   // "rays" and "rays_per_s" carry the same meaning as in the path tracer's statistics.

@@ -9,6 +9,7 @@
 
 #include "core/math.h"
 #include "geometry/accel.h"
+#include "render/adaptive_sampling.h"
 #include "scene/scene.h"
 
 namespace rc {
@@ -20,6 +21,7 @@ struct RenderOptions {
   int spp = 0;               // 0 = scene's sample_count
   uint64_t seed = 0;         // added to the scene sampler's seed
   std::string sampler;       // "" = the scene's <sampler>; else independent | ldsampler
+  AdaptiveSettings adaptive; // --adaptive T, --max-spp N (off by default)
   bool quiet = false;        // no progress bar
   std::vector<std::string> aovs;  // requested AOV names (integrator-specific)
   std::string cacheSave;          // rcache: write the view-independent cache here after rendering

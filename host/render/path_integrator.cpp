@@ -88,6 +88,7 @@ class PathIntegrator final : public Integrator {
     loop.seed = ctx.scene.samplerSeed + ctx.options.seed;
     loop.lowDiscrepancy = usesLowDiscrepancy(ctx);
     loop.cameraRay = [&](const Vec2& filmPos) { return camera.generate(filmPos); };
+    loop.adaptive = ctx.options.adaptive;
     loop.phase = "path";
     const RenderLoopResult result = renderSamples(ctx, film, loop, [&](const SampleInput& in, Rng& rng, TileFilm&) {
       return pathRadiance(ctx, settings_, *in.cameraRay, rng, in.cameraHit);
@@ -100,6 +101,8 @@ class PathIntegrator final : public Integrator {
     stats.set("spp", loop.spp);
     stats.setText("sampler", loop.lowDiscrepancy ? "ldsampler" : "independent");
     stats.set("samples", static_cast<double>(result.samples));
+    reportAdaptiveSampling(stats, ctx.options.adaptive, loop.spp, result.samples + result.nanSamples,
+                           result.adaptivePixels, result.maxPixelSamples, static_cast<double>(film.width()) * film.height());
     stats.set("nan_samples", static_cast<double>(result.nanSamples));
     stats.set("rays", rays);
     stats.set("rays_per_s", seconds > 0.0 ? rays / seconds : 0.0);

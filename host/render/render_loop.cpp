@@ -71,22 +71,28 @@ RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const Rende
   std::atomic<uint64_t> samples{0}, nans{0};
   const int width = film.width();
   const int spp = std::max(1, settings.spp);
-  RenderLoopResult result = renderTiles(ctx, film, settings, [&](TileFilm& tile) {
+  // Round 0: every pixel's spp samples; then (adaptive sampling) rounds for the pixels that need
+  // more, over the tiles that hold any. A tile's pixels are written by its thread alone.
+  AdaptivePixels adaptive(width, film.height(), spp, settings.adaptive);
+  const TileFn tileFn = [&](TileFilm& tile) {
     uint64_t tileSamples = 0, tileNans = 0;
     const bool batch = static_cast<bool>(settings.cameraRay);
+    const std::vector<SampleRange>& ranges = adaptive.ranges();
     std::vector<Rng> rngs;
     std::vector<Vec2> pos;
     std::vector<Ray> rays;
     std::vector<Hit> hits;
     for (int py = tile.y0(); py < tile.y1(); ++py) {
+      const size_t row = static_cast<size_t>(py) * width;
       // The row's samples: their RNG streams and film positions, then (batch) the camera rays.
       rngs.clear();
       pos.clear();
       for (int px = tile.x0(); px < tile.x1(); ++px)
-        for (int s = 0; s < spp; ++s) {
+        for (int s = ranges[row + px].first; s < ranges[row + px].end; ++s) {
           rngs.push_back(pixelRng(settings.seed, width, px, py, s, settings.lowDiscrepancy));
           pos.push_back(Vec2(static_cast<float>(px), static_cast<float>(py)) + rngs.back().next2D());
         }
+      if (pos.empty()) continue;
       if (batch) {
         rays.resize(pos.size());
         hits.resize(pos.size());
@@ -95,7 +101,7 @@ RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const Rende
       }
       size_t k = 0;
       for (int px = tile.x0(); px < tile.x1(); ++px)
-        for (int s = 0; s < spp; ++s, ++k) {
+        for (int s = ranges[row + px].first; s < ranges[row + px].end; ++s, ++k) {
           Rng& rng = rngs[k];
           SampleInput in;
           in.px = px;
@@ -112,14 +118,23 @@ RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const Rende
             continue;
           }
           tile.splat(in.filmPos, L);
+          adaptive.add(row + px, s, L);
           ++tileSamples;
         }
     }
     samples += tileSamples;
     nans += tileNans;
-  });
+  };
+  RenderLoopResult result = renderTiles(ctx, film, settings, tileFn);
+  for (int round = 1; !result.interrupted && adaptive.nextRound(); ++round) {
+    RenderLoopSettings more = settings;
+    more.phase = settings.phase + " (adaptive " + std::to_string(round) + ")";
+    result.interrupted = renderTiles(ctx, film, more, tileFn).interrupted;
+  }
   result.samples = samples.load();
   result.nanSamples = nans.load();
+  result.adaptivePixels = adaptive.pixelsAboveSpp();
+  result.maxPixelSamples = adaptive.maxSamples();
   return result;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/rng.h"
+#include "render/adaptive_sampling.h"
 #include "render/film.h"
 #include "render/integrator.h"
 
@@ -18,6 +19,7 @@ struct RenderLoopSettings {
   uint64_t seed = 0;
   bool lowDiscrepancy = false;  // pixel samples start with their padded Sobol dimensions
   std::function<Ray(const Vec2&)> cameraRay;  // set: trace camera rays in batches (SampleInput)
+  AdaptiveSettings adaptive;  // off by default: every pixel takes spp samples
   int tileSize = 32;
   std::string phase = "render";  // progress label
 };
@@ -26,6 +28,8 @@ struct RenderLoopResult {
   bool interrupted = false;
   uint64_t samples = 0;     // samples splatted
   uint64_t nanSamples = 0;  // non-finite samples dropped
+  uint64_t adaptivePixels = 0;  // pixels that took more than spp samples
+  int maxPixelSamples = 0;      // most samples any pixel took
 };
 
 // Per-sample work: radiance along the camera sample at filmPos (pixels, top-left origin) of pixel

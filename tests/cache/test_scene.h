@@ -106,7 +106,7 @@ struct RenderResult {
 
 inline RenderResult renderScene(const Scene& scene, const IntegratorSettings& settings, int spp, uint64_t seed = 0,
                                 const std::string& cacheSave = "", const std::string& cacheLoad = "",
-                                std::vector<std::string> aovs = {}) {
+                                std::vector<std::string> aovs = {}, AdaptiveSettings adaptive = {}) {
   Accel accel(scene);
   LightSampler lights(scene);
   auto backend = makeScalarBackend();
@@ -117,6 +117,7 @@ inline RenderResult renderScene(const Scene& scene, const IntegratorSettings& se
   opt.cacheSave = cacheSave;
   opt.cacheLoad = cacheLoad;
   opt.aovs = aovs;
+  opt.adaptive = adaptive;
   RenderContext ctx{scene, accel, lights, opt, backend.get()};
   auto integ = settings.type == "path" ? makePathIntegrator(settings) : makeRcacheIntegrator(settings);
   RenderResult r;

@@ -35,6 +35,10 @@ expect_error bad_extension "unsupported output format" -- "$DATA/tiny.xml" -o "$
 expect_error unwritable "not writable" -- "$DATA/tiny.xml" -o "/proc/nope/out.exr"
 expect_error bad_device "opencl:9:9" -- "$DATA/tiny.xml" --integrator rcache --device opencl:9:9 -o "$TMP/d.exr" --quiet
 expect_error bad_sampler "--sampler: expected independent or ldsampler" -- "$DATA/tiny.xml" --sampler halton -o "$TMP/s.exr"
+expect_error bad_adaptive "--adaptive: expected a number" -- "$DATA/tiny.xml" --adaptive lots -o "$TMP/s.exr"
+expect_error zero_adaptive "--adaptive: 0 is out of range" -- "$DATA/tiny.xml" --adaptive 0 -o "$TMP/s.exr"
+expect_error max_spp_alone "--max-spp: only with --adaptive" -- "$DATA/tiny.xml" --max-spp 64 -o "$TMP/s.exr"
+expect_error max_spp_below "--max-spp: 4 is below --spp 16" -- "$DATA/tiny.xml" --adaptive 0.05 --spp 16 --max-spp 4 -o "$TMP/s.exr"
 expect_error undefined_param "undefined_thing" -- "$DATA/tiny.xml" -o "$TMP/p.exr" -D res='$undefined_thing'
 ls "$TMP"/*.exr >/dev/null 2>&1 && fail no_partial_outputs "$(ls "$TMP")" || pass no_partial_outputs
 
@@ -59,6 +63,17 @@ for integ in path rcache; do
       "$TMP/ld_$integ.json" && pass "sampler_override_$integ" || fail "sampler_override_$integ" "stats: $(cat "$TMP/ld_$integ.json")"
   else
     fail "sampler_override_$integ" "exit $?"
+  fi
+done
+
+# --adaptive: both integrators report it, and no pixel exceeds --max-spp.
+for integ in path rcache; do
+  if "$RC" "$DATA/tiny.xml" --integrator $integ --adaptive 0.05 --spp 4 --max-spp 32 -D rays=64 -o "$TMP/ad_$integ.exr" \
+      --quiet --stats "$TMP/ad_$integ.json" -t 2; then
+    python3 -c "import json,sys; s=json.load(open(sys.argv[1])); sys.exit(0 if s['adaptive_sampling']=='on' and 4 <= s['samples_per_pixel_mean'] <= s['samples_per_pixel_max'] <= 32 else 1)" \
+      "$TMP/ad_$integ.json" && pass "adaptive_$integ" || fail "adaptive_$integ" "stats: $(cat "$TMP/ad_$integ.json")"
+  else
+    fail "adaptive_$integ" "exit $?"
   fi
 done
 

@@ -1,0 +1,116 @@
+#include "render/adaptive_sampling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "render/integrator.h"
+
+namespace rc {
+
+int effectiveMaxSpp(const AdaptiveSettings& s, int spp) {
+  if (!s.enabled()) return spp;
+  const long long cap = s.maxSpp > 0 ? s.maxSpp : static_cast<long long>(kDefaultMaxSppFactor) * spp;
+  return static_cast<int>(std::clamp<long long>(cap, spp, 1 << 20));
+}
+
+AdaptivePixels::AdaptivePixels(int width, int height, int spp, const AdaptiveSettings& settings)
+    : settings_(settings), width_(width), height_(height), spp_(spp), maxSpp_(effectiveMaxSpp(settings, spp)),
+      px_(static_cast<size_t>(width) * height), ranges_(px_.size()) {
+  restart(0, px_.size());
+}
+
+void AdaptivePixels::restart(size_t begin, size_t end) {
+  for (size_t p = begin; p < end; ++p) {
+    px_[p] = Pixel{};
+    px_[p].n = spp_;
+    px_[p].halfN = spp_ / 2;
+    ranges_[p] = SampleRange{0, spp_};
+  }
+}
+
+void AdaptivePixels::add(size_t p, int sampleIndex, const Color& L) {
+  Pixel& px = px_[p];
+  for (int c = 0; c < 3; ++c) {
+    px.all[c] += L[c];
+    if (sampleIndex < px.halfN) px.half[c] += L[c];
+  }
+}
+
+float AdaptivePixels::errorSquared(size_t p) const {
+  const Pixel& px = px_[p];
+  if (px.halfN <= 0 || px.n <= px.halfN) return std::numeric_limits<float>::infinity();
+  double e = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    const double mAll = px.all[c] / px.n, mHalf = px.half[c] / px.halfN;
+    e += (mAll - mHalf) * (mAll - mHalf) / (mAll * mAll + 0.01);
+  }
+  return static_cast<float>(e / 3.0);
+}
+
+bool AdaptivePixels::nextRound() {
+  for (size_t p = 0; p < px_.size(); ++p) ranges_[p] = SampleRange{px_[p].n, px_[p].n};
+  if (!settings_.enabled()) return false;
+  // Largest error in each pixel's neighbourhood: separable max filter (rows, then columns).
+  const size_t W = static_cast<size_t>(width_), H = static_cast<size_t>(height_);
+  std::vector<float> e(px_.size()), rowMax(px_.size());
+  for (size_t p = 0; p < px_.size(); ++p) e[p] = errorSquared(p);
+  for (size_t y = 0; y < H; ++y)
+    for (size_t x = 0; x < W; ++x) {
+      float m = 0.0f;
+      for (size_t u = x > size_t(kAdaptiveWindow) ? x - kAdaptiveWindow : 0; u <= std::min(W - 1, x + kAdaptiveWindow); ++u)
+        m = std::max(m, e[y * W + u]);
+      rowMax[y * W + x] = m;
+    }
+  const float t2 = settings_.threshold * settings_.threshold;
+  bool any = false;
+  for (size_t y = 0; y < H; ++y)
+    for (size_t x = 0; x < W; ++x) {
+      float m = 0.0f;
+      for (size_t v = y > size_t(kAdaptiveWindow) ? y - kAdaptiveWindow : 0; v <= std::min(H - 1, y + kAdaptiveWindow); ++v)
+        m = std::max(m, rowMax[v * W + x]);
+      Pixel& px = px_[y * W + x];
+      if (px.n >= maxSpp_ || !(m > t2)) continue;
+      // The samples so far become the "first half" of the doubled set.
+      std::copy(px.all, px.all + 3, px.half);
+      px.halfN = px.n;
+      px.n = std::min(maxSpp_, 2 * px.n);
+      ranges_[y * W + x] = SampleRange{px.halfN, px.n};
+      any = true;
+    }
+  return any;
+}
+
+uint64_t AdaptivePixels::totalSamples() const {
+  uint64_t s = 0;
+  for (const Pixel& p : px_) s += static_cast<uint64_t>(p.n);
+  return s;
+}
+
+uint64_t AdaptivePixels::pixelsAboveSpp() const {
+  uint64_t k = 0;
+  for (const Pixel& p : px_) k += p.n > spp_ ? 1 : 0;
+  return k;
+}
+
+int AdaptivePixels::maxSamples() const {
+  int m = 0;
+  for (const Pixel& p : px_) m = std::max(m, p.n);
+  return m;
+}
+
+void reportAdaptiveSampling(RenderStats& stats, const AdaptiveSettings& settings, int spp, uint64_t samples,
+                            uint64_t pixelsAboveSpp, int maxSamples, double pixels) {
+  if (!settings.enabled()) {
+    stats.setText("adaptive_sampling", "off");
+    return;
+  }
+  stats.setText("adaptive_sampling", "on");
+  stats.set("adaptive_threshold", settings.threshold);
+  stats.set("adaptive_max_spp", effectiveMaxSpp(settings, spp));
+  stats.set("samples_per_pixel_mean", pixels > 0 ? double(samples) / pixels : 0.0);
+  stats.set("adaptive_pixels_fraction", pixels > 0 ? double(pixelsAboveSpp) / pixels : 0.0);
+  stats.set("samples_per_pixel_max", maxSamples);
+}
+
+}  // namespace rc
