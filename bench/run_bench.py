@@ -26,16 +26,22 @@ RCACHE = os.path.join(ROOT, "build", "rcache")
 # matter: the cache settings set the interpolation error, spp the noise of direct light, edges
 # and the materials rcache path traces (too sharp for the cache).
 SCENES = ["cornell_glossy", "glossy_sweep", "aniso_sphere", "curved_glossy", "cornell_diffuse"]
+# Adaptive sampling (--adaptive T, --max-spp N) is offered to both methods with the same thresholds;
+# each method's curve is the best error it reaches by each time over all its settings.
 FULL = dict(res=512, ref_spp=4096, path_spp=[4, 8, 16, 32, 64, 128, 256],
+            path_adaptive=[(dict(adapt=0.05), 16), (dict(adapt=0.05), 32), (dict(adapt=0.02), 32)],
             rcache=[(dict(), 4), (dict(), 8), (dict(), 16), (dict(), 32), (dict(), 64), (dict(), 128), (dict(), 256),
                     (dict(rays=256, a=0.5), 16),
-                    (dict(rays=256, a=0.5), 64), (dict(rays=1024, a=0.3), 64)],
+                    (dict(rays=256, a=0.5), 64), (dict(rays=1024, a=0.3), 64),
+                    (dict(adapt=0.05), 16), (dict(adapt=0.05), 32), (dict(adapt=0.02), 32),
+                    (dict(adapt=0.02), 64), (dict(adapt=0.02, rays=1024, a=0.3), 64)],
             variants=[("adaptive=true", {"adaptive": "true"}), ("gradients=false", {"gradients": "false"}),
                       ("frame=world", {"frame": "world"}), ("mode=tl", {"mode": "tl"})],
             variant_spp=16)
 QUICK = dict(res=96, ref_spp=512, path_spp=[1, 4, 16, 64],
+             path_adaptive=[(dict(adapt=0.05), 16)],
              rcache=[(dict(), 2), (dict(), 8), (dict(), 32), (dict(rays=256, a=0.5), 8), (dict(rays=256, a=0.5), 32),
-                     (dict(rays=1024, a=0.3), 32)],
+                     (dict(rays=1024, a=0.3), 32), (dict(adapt=0.05), 8)],
              variants=[("adaptive=true", {"adaptive": "true"}), ("frame=world", {"frame": "world"}),
                        ("mode=tl", {"mode": "tl"})],
              variant_spp=8)
@@ -48,11 +54,15 @@ QUICK = dict(res=96, ref_spp=512, path_spp=[1, 4, 16, 64],
 REFERENCE_SEED = 7919
 
 
+# Ladder settings that are command-line flags rather than -D parameters.
+CLI_SETTINGS = {"adapt": "--adaptive", "max_spp": "--max-spp"}  # "adaptive" is the -D of adaptive caching
+
+
 def render(scene_path, out_exr, integrator, spp, res, threads, defines, stats_path, seed=0):
     cmd = [RCACHE, scene_path, "-o", out_exr, "--integrator", integrator, "--spp", str(spp), "--quiet",
            "--stats", stats_path, "-t", str(threads), "-D", "res=%d" % res, "--seed", str(seed)]
     for k, v in defines.items():
-        cmd += ["-D", "%s=%s" % (k, v)]
+        cmd += [CLI_SETTINGS[k], str(v)] if k in CLI_SETTINGS else ["-D", "%s=%s" % (k, v)]
     # Peak memory of this child alone: wait4 returns its own rusage.
     t0 = time.perf_counter()
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
@@ -123,6 +133,11 @@ def scene_hash(scene_path, settings):
                     h.update(f.read())
     h.update(json.dumps(settings, sort_keys=True).encode())
     return h.hexdigest()[:16]
+
+
+def label_of(settings, spp):
+    parts = ["%s=%s" % (k, settings[k]) for k in sorted(settings)] or ["defaults"]
+    return ",".join(parts + ["spp=%d" % spp])
 
 
 def time_to_reach(points, target):
@@ -232,9 +247,18 @@ def main():
                          rmse=err["rmse"], peak_mib=mem, records=0, image=out)
                 points["path"].append(p)
                 emit(dict(p))
-            def label_of(settings, spp):
-                parts = ["%s=%s" % (k, settings[k]) for k in sorted(settings)] or ["defaults"]
-                return ",".join(parts + ["spp=%d" % spp])
+            for st, spp in cfg["path_adaptive"]:
+                label = label_of(st, spp)
+                tag = label.replace("=", "").replace(",", "_")
+                out = os.path.join(work, "path_%s.exr" % tag)
+                wall, mem, stats = render(scene_path, out, "path", spp, cfg["res"], args.threads, st,
+                                          os.path.join(work, "path_%s.json" % tag))
+                err = diff(out, ref)
+                p = dict(scene=name, method="path", setting=label, spp=spp, time_s=wall, relmse=err["relmse"],
+                         rmse=err["rmse"], peak_mib=mem, records=0, image=out,
+                         spp_mean=stats.get("samples_per_pixel_mean"))
+                points["path"].append(p)
+                emit(dict(p))
             ladder = [(label_of(st, n), dict({k: str(v) for k, v in st.items()}, spp=str(n))) for st, n in cfg["rcache"]]
             variants = [] if args.no_variants else [
                 ("%s,spp=%d" % (vlabel, cfg["variant_spp"]), dict(vdef, spp=str(cfg["variant_spp"])))
@@ -249,6 +273,7 @@ def main():
                 err = diff(out, ref)
                 p = dict(scene=name, method="rcache", setting=label, time_s=wall, relmse=err["relmse"], rmse=err["rmse"],
                          peak_mib=mem, records=stats.get("records", 0), image=out,
+                         spp_mean=stats.get("samples_per_pixel_mean"),
                          ladder=label in [l for l, _ in ladder])
                 if p["ladder"]:
                     points["rcache"].append(p)

@@ -408,21 +408,31 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   for (int attempt = 0; attempt < 2 && !interrupted; ++attempt) {
     const size_t recordsBefore = totalRecords();
     adaptiveFilms.clear();
-    for (int round = 1; !interrupted && adaptive.nextRound(); ++round)
-      for (int band = 0; band < bands; ++band) {
+    for (int round = 1; !interrupted && adaptive.nextRound(); ++round) {
+      // Runs of rows holding ≈ kSamplesPerBand of the round's samples (few pixels take more, so
+      // one engine call spans many rows and its kernel launches stay few).
+      const SampleRange* r = adaptive.ranges().data();
+      for (int y0 = 0; y0 < H && !interrupted;) {
+        size_t samples = 0;
+        int y1 = y0;
+        while (y1 < H && samples < kSamplesPerBand) {
+          for (int x = 0; x < W; ++x) samples += static_cast<size_t>(r[static_cast<size_t>(y1) * W + x].count());
+          ++y1;
+        }
         if (cancelled()) {
           interrupted = true;
           break;
         }
-        const int y0 = band * rowsPerBand, y1 = std::min(H, y0 + rowsPerBand);
-        const size_t begin = static_cast<size_t>(y0) * W, end = static_cast<size_t>(y1) * W;
-        const SampleRange* r = adaptive.ranges().data();
-        if (std::all_of(r + begin, r + end, [](const SampleRange& x) { return x.count() == 0; })) continue;
-        auto tile = std::make_unique<TileFilm>(film.makeTile(0, y0, W, y1));
-        shadeSamples(y0, r + begin, end - begin, *tile);
-        adaptiveFilms.push_back(std::move(tile));
-        if (ctx.progress) ctx.progress("render (adaptive " + std::to_string(round) + ")", double(band + 1), double(bands));
+        if (samples > 0) {
+          const size_t begin = static_cast<size_t>(y0) * W, end = static_cast<size_t>(y1) * W;
+          auto tile = std::make_unique<TileFilm>(film.makeTile(0, y0, W, y1));
+          shadeSamples(y0, r + begin, end - begin, *tile);
+          adaptiveFilms.push_back(std::move(tile));
+        }
+        if (ctx.progress) ctx.progress("render (adaptive " + std::to_string(round) + ")", double(y1), double(H));
+        y0 = y1;
       }
+    }
     if (interrupted || totalRecords() == recordsBefore) break;
     for (int band = 0; band < bands; ++band) renderBand(band);
     reshaded += bands;
