@@ -34,7 +34,10 @@ FULL = dict(res=512, ref_spp=4096, path_spp=[4, 8, 16, 32, 64, 128, 256],
                     (dict(rays=256, a=0.5), 16),
                     (dict(rays=256, a=0.5), 64), (dict(rays=1024, a=0.3), 64),
                     (dict(adapt=0.05), 16), (dict(adapt=0.05), 32), (dict(adapt=0.02), 32),
-                    (dict(adapt=0.02), 64), (dict(adapt=0.02, rays=1024, a=0.3), 64)],
+                    (dict(adapt=0.02), 64), (dict(adapt=0.02, rays=1024, a=0.3), 64),
+                    # cheaper caches for the small budgets (the fill is most of the time there)
+                    (dict(rays=128, a=0.6), 16), (dict(adapt=0.05, rays=128, a=0.6), 16),
+                    (dict(adapt=0.05, rays=256, a=0.5), 16)],
             variants=[("adaptive=true", {"adaptive": "true"}), ("gradients=false", {"gradients": "false"}),
                       ("frame=world", {"frame": "world"}), ("mode=tl", {"mode": "tl"})],
             variant_spp=16)
