@@ -1,7 +1,9 @@
 #include "core/parallel.h"
 
 #include <atomic>
+#include <condition_variable>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -9,8 +11,92 @@
 namespace rc {
 
 namespace {
+
 int gThreads = 0;
+// True on a thread while it runs chunks of a parallel loop: a parallelFor nested inside a body
+// runs serially on that thread (the outer loop already keeps every thread busy, and waiting for
+// pool workers that are themselves inside the outer loop would deadlock).
+thread_local bool tInsideLoop = false;
+
+// Persistent workers: a render makes thousands of parallelFor calls (per batch of records, per
+// band), and creating and joining threads for each cost ≈ 5 % of the run time.
+class WorkerPool {
+ public:
+  explicit WorkerPool(int helpers) {
+    for (int i = 0; i < helpers; ++i) workers_.emplace_back([this] { loop(); });
+  }
+  ~WorkerPool() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    for (auto& t : workers_) t.join();
+  }
+  int helpers() const { return static_cast<int>(workers_.size()); }
+
+  // Runs `work` on every worker and on the calling thread; returns when all have returned. A
+  // second caller while the pool is busy (two loops started from different threads) runs its
+  // work alone on its own thread.
+  void run(const std::function<void()>& work) {
+    std::unique_lock<std::mutex> owner(runMutex_, std::try_to_lock);
+    if (!owner.owns_lock()) {
+      work();
+      return;
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      job_ = &work;
+      busy_ = static_cast<int>(workers_.size());
+      ++generation_;
+    }
+    wake_.notify_all();
+    work();
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [this] { return busy_ == 0; });
+    job_ = nullptr;
+  }
+
+ private:
+  void loop() {
+    uint64_t seen = 0;
+    for (;;) {
+      const std::function<void()>* job = nullptr;
+      {
+        std::unique_lock<std::mutex> lock(mutex_);
+        wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+        if (stop_) return;
+        seen = generation_;
+        job = job_;
+      }
+      (*job)();
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (--busy_ == 0) done_.notify_one();
+    }
+  }
+
+  std::mutex runMutex_;  // held by the caller whose loop the workers run
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  std::vector<std::thread> workers_;
+  const std::function<void()>* job_ = nullptr;
+  uint64_t generation_ = 0;
+  int busy_ = 0;
+  bool stop_ = false;
+};
+
+// The pool for the current thread count (rebuilt when setThreadCount changes it). parallelFor is
+// called from one thread at a time outside loops (the render's control flow is serial).
+std::mutex gPoolMutex;
+std::shared_ptr<WorkerPool> gPool;
+
+std::shared_ptr<WorkerPool> poolFor(int threads) {
+  std::lock_guard<std::mutex> lock(gPoolMutex);
+  if (!gPool || gPool->helpers() != threads - 1) gPool = std::make_shared<WorkerPool>(threads - 1);
+  return gPool;
 }
+
+}  // namespace
 
 void setThreadCount(int threads) { gThreads = threads < 0 ? 0 : threads; }
 
@@ -24,7 +110,7 @@ void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t
   if (n == 0) return;
   if (chunk == 0) chunk = 1;
   const size_t chunks = (n + chunk - 1) / chunk;
-  const int workers = static_cast<int>(std::min<size_t>(chunks, static_cast<size_t>(threadCount())));
+  const int threads = threadCount();
   std::atomic<size_t> next{0};
   std::exception_ptr failure;
   std::mutex failureMutex;
@@ -41,13 +127,15 @@ void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t
       }
     }
   };
-  if (workers <= 1) {
+  if (chunks <= 1 || threads <= 1 || tInsideLoop) {
     work();
   } else {
-    std::vector<std::thread> pool;
-    for (int i = 1; i < workers; ++i) pool.emplace_back(work);
-    work();
-    for (auto& t : pool) t.join();
+    const std::function<void()> job = [&] {
+      tInsideLoop = true;
+      work();
+      tInsideLoop = false;
+    };
+    poolFor(threads)->run(job);
   }
   if (failure) std::rethrow_exception(failure);
 }

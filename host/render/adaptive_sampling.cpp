@@ -16,7 +16,7 @@ int effectiveMaxSpp(const AdaptiveSettings& s, int spp) {
 
 AdaptivePixels::AdaptivePixels(int width, int height, int spp, const AdaptiveSettings& settings)
     : settings_(settings), width_(width), height_(height), spp_(spp), maxSpp_(effectiveMaxSpp(settings, spp)),
-      px_(static_cast<size_t>(width) * height), ranges_(px_.size()) {
+      px_(static_cast<size_t>(width) * height), ranges_(px_.size()), dirty_(px_.size(), 1) {
   restart(0, px_.size());
 }
 
@@ -26,11 +26,13 @@ void AdaptivePixels::restart(size_t begin, size_t end) {
     px_[p].n = spp_;
     px_[p].halfN = spp_ / 2;
     ranges_[p] = SampleRange{0, spp_};
+    dirty_[p] = 1;
   }
 }
 
 void AdaptivePixels::add(size_t p, int sampleIndex, const Color& L) {
   Pixel& px = px_[p];
+  dirty_[p] = 1;
   for (int c = 0; c < 3; ++c) {
     px.all[c] += L[c];
     if (sampleIndex < px.halfN) px.half[c] += L[c];
@@ -53,8 +55,15 @@ bool AdaptivePixels::nextRound() {
   if (!settings_.enabled()) return false;
   // Largest error in each pixel's neighbourhood: separable max filter (rows, then columns).
   const size_t W = static_cast<size_t>(width_), H = static_cast<size_t>(height_);
-  std::vector<float> e(px_.size()), rowMax(px_.size());
-  for (size_t p = 0; p < px_.size(); ++p) e[p] = errorSquared(p);
+  // Error estimates change only where samples were added since the last round.
+  std::vector<float>& e = error_;
+  e.resize(px_.size(), 0.0f);
+  for (size_t p = 0; p < px_.size(); ++p)
+    if (dirty_[p]) {
+      e[p] = errorSquared(p);
+      dirty_[p] = 0;
+    }
+  std::vector<float> rowMax(px_.size());
   for (size_t y = 0; y < H; ++y)
     for (size_t x = 0; x < W; ++x) {
       float m = 0.0f;

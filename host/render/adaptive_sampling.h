@@ -72,6 +72,8 @@ class AdaptivePixels {
   int width_, height_, spp_, maxSpp_;
   std::vector<Pixel> px_;
   std::vector<SampleRange> ranges_;
+  std::vector<float> error_;  // errorSquared per pixel, as of the last round
+  std::vector<char> dirty_;   // samples added since error_ was computed (one writer per pixel)
 };
 
 struct RenderStats;  // render/integrator.h
