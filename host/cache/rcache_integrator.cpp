@@ -415,8 +415,11 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
       for (int y0 = 0; y0 < H && !interrupted;) {
         size_t samples = 0;
         int y1 = y0;
-        while (y1 < H && samples < kSamplesPerBand) {
-          for (int x = 0; x < W; ++x) samples += static_cast<size_t>(r[static_cast<size_t>(y1) * W + x].count());
+        while (y1 < H) {
+          size_t row = 0;
+          for (int x = 0; x < W; ++x) row += static_cast<size_t>(r[static_cast<size_t>(y1) * W + x].count());
+          if (samples > 0 && samples + row > kSamplesPerBand) break;  // a row alone may exceed it
+          samples += row;
           ++y1;
         }
         if (cancelled()) {
