@@ -31,6 +31,7 @@ void AdaptivePixels::restart(size_t begin, size_t end) {
 }
 
 void AdaptivePixels::add(size_t p, int sampleIndex, const Color& L) {
+  if (!settings_.enabled()) return;  // only the sample counts matter then
   Pixel& px = px_[p];
   dirty_[p] = 1;
   for (int c = 0; c < 3; ++c) {
