@@ -241,45 +241,33 @@ def main():
                              relmse=err["relmse"], rmse=err["rmse"], image=out)
                     points["mitsuba"].append(p)
                     emit(dict(p))
-            for spp in cfg["path_spp"]:
-                out = os.path.join(work, "path_%d.exr" % spp)
-                wall, mem, stats = render(scene_path, out, "path", spp, cfg["res"], args.threads, {},
-                                          os.path.join(work, "path_%d.json" % spp))
-                err = diff(out, ref)
-                p = dict(scene=name, method="path", setting="spp=%d" % spp, spp=spp, time_s=wall, relmse=err["relmse"],
-                         rmse=err["rmse"], peak_mib=mem, records=0, image=out)
-                points["path"].append(p)
-                emit(dict(p))
-            for st, spp in cfg["path_adaptive"]:
-                label = label_of(st, spp)
-                tag = label.replace("=", "").replace(",", "_")
-                out = os.path.join(work, "path_%s.exr" % tag)
-                wall, mem, stats = render(scene_path, out, "path", spp, cfg["res"], args.threads, st,
-                                          os.path.join(work, "path_%s.json" % tag))
-                err = diff(out, ref)
-                p = dict(scene=name, method="path", setting=label, spp=spp, time_s=wall, relmse=err["relmse"],
-                         rmse=err["rmse"], peak_mib=mem, records=0, image=out,
-                         spp_mean=stats.get("samples_per_pixel_mean"))
-                points["path"].append(p)
-                emit(dict(p))
-            ladder = [(label_of(st, n), dict({k: str(v) for k, v in st.items()}, spp=str(n))) for st, n in cfg["rcache"]]
+            # Jobs of both methods, run alternately: this VM's speed drifts by up to 30 % over minutes,
+            # and interleaving spreads a slow spell over both curves instead of one.
+            path_jobs = [("path", "spp=%d" % n, "path_%d" % n, n, {}) for n in cfg["path_spp"]]
+            for st, n in cfg["path_adaptive"]:
+                label = label_of(st, n)
+                path_jobs.append(("path", label, "path_" + label.replace("=", "").replace(",", "_"), n, st))
+            ladder = [(label_of(st, n), st, n) for st, n in cfg["rcache"]]
             variants = [] if args.no_variants else [
-                ("%s,spp=%d" % (vlabel, cfg["variant_spp"]), dict(vdef, spp=str(cfg["variant_spp"])))
-                for vlabel, vdef in cfg["variants"]]
-            for label, defines in ladder + variants:
-                tag = label.replace("=", "").replace(",", "_")
-                out = os.path.join(work, "rcache_%s.exr" % tag)
-                defines = dict(defines)
-                spp = int(defines.pop("spp"))
-                wall, mem, stats = render(scene_path, out, "rcache", spp, cfg["res"], args.threads, defines,
-                                          os.path.join(work, "rcache_%s.json" % tag))
+                ("%s,spp=%d" % (vlabel, cfg["variant_spp"]), vdef, cfg["variant_spp"]) for vlabel, vdef in cfg["variants"]]
+            ladder_labels = {label for label, _, _ in ladder}
+            rcache_jobs = [("rcache", label, "rcache_" + label.replace("=", "").replace(",", "_"), n, st)
+                           for label, st, n in ladder + variants]
+            jobs = []
+            for k in range(max(len(path_jobs), len(rcache_jobs))):
+                jobs += path_jobs[k:k + 1] + rcache_jobs[k:k + 1]
+            for method, label, tag, spp, settings in jobs:
+                out = os.path.join(work, tag + ".exr")
+                wall, mem, stats = render(scene_path, out, method, spp, cfg["res"], args.threads,
+                                          {k: str(v) for k, v in settings.items()}, os.path.join(work, tag + ".json"))
                 err = diff(out, ref)
-                p = dict(scene=name, method="rcache", setting=label, time_s=wall, relmse=err["relmse"], rmse=err["rmse"],
-                         peak_mib=mem, records=stats.get("records", 0), image=out,
-                         spp_mean=stats.get("samples_per_pixel_mean"),
-                         ladder=label in [l for l, _ in ladder])
-                if p["ladder"]:
-                    points["rcache"].append(p)
+                p = dict(scene=name, method=method, setting=label, spp=spp, time_s=wall, relmse=err["relmse"],
+                         rmse=err["rmse"], peak_mib=mem, records=stats.get("records", 0), image=out,
+                         spp_mean=stats.get("samples_per_pixel_mean"))
+                if method == "rcache":
+                    p["ladder"] = label in ladder_labels
+                if method == "path" or p["ladder"]:
+                    points[method].append(p)
                 emit(dict(p))
             # Time to reach the errors that both curves span.
             best_rc = min(p["relmse"] for p in points["rcache"])
