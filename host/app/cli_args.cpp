@@ -1,10 +1,10 @@
 #include "app/cli_args.h"
 
 #include <cerrno>
-#include <cmath>
 #include <cstdlib>
 
 #include "core/error.h"
+#include "scene/value_parsing.h"
 
 namespace rc {
 
@@ -32,11 +32,12 @@ long long parseInteger(const std::string& flag, const std::string& text, long lo
 }
 
 double parseReal(const std::string& flag, const std::string& text, double lo, double hi) {
-  errno = 0;
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+  double v = 0.0;
+  try {
+    v = parseNumber(text);  // the scene parser's: whole string, finite
+  } catch (const Error&) {
     throw Error(flag + ": expected a number, got '" + text + "'");
+  }
   if (v < lo || v > hi)
     throw Error(flag + ": " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
   return v;

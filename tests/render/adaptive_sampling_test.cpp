@@ -101,15 +101,12 @@ TEST(AdaptivePixels, RestartForgetsAPixel) {
 }
 
 Image renderPath(const test::World& w, int spp, uint64_t seed, AdaptiveSettings adaptive, RenderStats* stats = nullptr) {
-  RenderContext ctx = w.context();
-  ctx.options.spp = spp;
-  ctx.options.seed = seed;
-  ctx.options.sampler = "ldsampler";
-  ctx.options.adaptive = adaptive;
-  RenderStats st;
-  Image img = makePathIntegrator(w.scene.integrator)->render(ctx, st);
-  if (stats) *stats = st;
-  return img;
+  RenderOptions o;
+  o.spp = spp;
+  o.seed = seed;
+  o.sampler = "ldsampler";
+  o.adaptive = adaptive;
+  return w.renderPath(o, stats);
 }
 
 // The visible light's edge is where a 16-spp image errs most; adaptive sampling spends its extra

@@ -13,13 +13,10 @@ namespace rc {
 namespace {
 
 Image renderPath(const test::World& w, int spp, uint64_t seed, RenderStats* statsOut = nullptr) {
-  RenderContext ctx = w.context();
-  ctx.options.spp = spp;
-  ctx.options.seed = seed;
-  RenderStats stats;
-  Image img = makePathIntegrator(w.scene.integrator)->render(ctx, stats);
-  if (statsOut) *statsOut = stats;
-  return img;
+  RenderOptions o;
+  o.spp = spp;
+  o.seed = seed;
+  return w.renderPath(o, statsOut);
 }
 
 // Monte Carlo error variance falls as 1/spp, so log relMSE against log spp has slope −1. The
@@ -61,12 +58,12 @@ TEST(PathRender, LowDiscrepancySamplerIsUnbiasedAndLessNoisy) {
   setThreadCount(2);
   const Image ref = renderPath(w, 1024, 1000);
   auto render = [&](const std::string& sampler, int spp, uint64_t seed) {
-    RenderContext ctx = w.context();
-    ctx.options.spp = spp;
-    ctx.options.seed = seed;
-    ctx.options.sampler = sampler;
+    RenderOptions o;
+    o.spp = spp;
+    o.seed = seed;
+    o.sampler = sampler;
     RenderStats stats;
-    Image img = makePathIntegrator(w.scene.integrator)->render(ctx, stats);
+    Image img = w.renderPath(o, &stats);
     std::string reported;
     for (const auto& [k, v] : stats.texts)
       if (k == "sampler") reported = v;

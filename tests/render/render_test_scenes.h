@@ -9,6 +9,7 @@
 #include "geometry/accel.h"
 #include "render/integrator.h"
 #include "render/light_sampler.h"
+#include "render/path_integrator.h"
 #include "scene/scene.h"
 
 namespace rc::test {
@@ -153,6 +154,15 @@ struct World {
     lights = std::make_unique<LightSampler>(scene);
   }
   RenderContext context() const { return RenderContext{scene, *accel, *lights, {}, nullptr, nullptr, {}}; }
+  // The path tracer's image of this world with the given options (spp, seed, sampler, adaptive…).
+  Image renderPath(const RenderOptions& options, RenderStats* statsOut = nullptr) const {
+    RenderContext ctx = context();
+    ctx.options = options;
+    RenderStats stats;
+    Image img = makePathIntegrator(scene.integrator)->render(ctx, stats);
+    if (statsOut) *statsOut = stats;
+    return img;
+  }
 };
 
 }  // namespace rc::test
