@@ -89,6 +89,20 @@ TEST(RcacheIntegrator, CacheSaveThenLoadGivesTheIdenticalImage) {
   std::remove(path.c_str());
 }
 
+// The last fill pass looks up sub-pixel points only in pixels at surface edges, and that is
+// enough: the final pass's jittered samples find records (no band is shaded again) and no
+// sample falls back to creating records.
+TEST(RcacheIntegrator, LastFillPassRefinesOnlySurfaceEdgesAndCoversTheFinalPass) {
+  const Scene s = test::boxScene(0.3f, 96, 72);
+  auto r = test::renderScene(s, test::rcacheSettings(s, {{"order", "6"}}), 8);
+  const double edges = r.stats.get("fill_edge_pixels_fraction", -1.0);
+  std::printf("edge pixels %.3f, bands reshaded %g, relaxed lookups %g\n", edges, r.stats.get("bands_reshaded"),
+              r.stats.get("lookups_relaxed"));
+  EXPECT_GT(edges, 0.0);    // the box's corners, the light, the image's walls meeting
+  EXPECT_LT(edges, 0.35);   // but not the walls' interiors
+  EXPECT_EQ(r.stats.get("bands_reshaded"), 0.0);
+}
+
 // Adaptive sampling in the final pass: the rounds run after every band saw the final caches, so
 // rendering again from the saved cache reproduces the image exactly; the extra samples go to few
 // pixels (the light's edges), and the image gets closer to the path-traced reference than the
