@@ -1,5 +1,5 @@
 #pragma once
-// Image files through OpenImageIO, chosen by extension:
+// Image files (image/image_file.h: EXR through OpenEXR, the rest through OpenImageIO), by extension:
 //   .exr  float32 RGB (AOVs as extra channels "<name>.R/G/B"), linear
 //   .hdr  Radiance RGBE, linear
 //   .png  8-bit sRGB-encoded, clamped to [0, 1]

@@ -1,5 +1,5 @@
 #pragma once
-// Reads a lat-long environment image (any format OpenImageIO reads) into linear RGB, top row first.
+// Reads a lat-long environment image (EXR, or any format OpenImageIO reads) into linear RGB, top row first.
 #include <string>
 #include <vector>
 

@@ -108,6 +108,14 @@ else
   fail rcache_render "exit $?"
 fi
 
+# A render to EXR never loads OpenImageIO (its ≈ 260 libraries cost 0.22 s per process); one to PNG
+# loads it on demand and writes the file.
+if LD_DEBUG=files "$RC" "$DATA/tiny.xml" -D res=8 --spp 1 -o "$TMP/nooiio.exr" --quiet 2> "$TMP/ld.log" \
+   && [ -s "$TMP/nooiio.exr" ] && ! grep -q "libOpenImageIO" "$TMP/ld.log" \
+   && LD_DEBUG=files "$RC" "$DATA/tiny.xml" -D res=8 --spp 1 -o "$TMP/oiio.png" --quiet 2> "$TMP/ld2.log" \
+   && [ -s "$TMP/oiio.png" ] && grep -q "libOpenImageIO" "$TMP/ld2.log"; then pass openimageio_on_demand
+else fail openimageio_on_demand "see $TMP/ld.log, $TMP/ld2.log"; fi
+
 # diff --json prints the three keys; a heat map is written.
 out=$("$RC" diff "$TMP/path.exr" "$TMP/path2.exr" --json --heatmap "$TMP/heat.png")
 python3 -c "import json,sys; d=json.loads(sys.argv[1]); [d[k] for k in ('rmse','relmse','max_abs')]" "$out" \

@@ -1,4 +1,5 @@
-// Image files: EXR exact round trip with AOVs, PNG sRGB encoding, HDR, and atomic writes.
+// Image files: EXR exact round trip with AOVs (and the same values through OpenImageIO), PNG sRGB
+// encoding, HDR, and atomic writes.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -7,6 +8,8 @@
 
 #include "core/error.h"
 #include "core/rng.h"
+#include "image/image_file.h"
+#include "image/oiio_module.h"
 #include "render/image_io.h"
 
 namespace rc {
@@ -51,6 +54,39 @@ TEST(ImageIo, ExrRoundTripIsExactWithAovs) {
   for (const auto& [name, layer] : img.aovs)
     for (size_t i = 0; i < layer.size(); ++i) EXPECT_EQ(back.aovs.at(name)[i], layer[i]) << name << i;
   EXPECT_EQ(dir.entries(), 1u);  // no temporary left behind
+}
+
+// Our EXR writer is OpenEXR itself; OpenImageIO (what other tools use, and what rcache read its
+// EXRs with before) reads the same channels and values back.
+TEST(ImageIo, ExrWrittenWithOpenExrReadsTheSameThroughOpenImageIo) {
+  TempDir dir;
+  Image img = randomImage(13, 7, 10.0f, 9);
+  img.aovs["technique"] = randomImage(13, 7, 1.0f, 10).pixels;
+  writeImage(img, dir.file("x.exr"));
+  ImageChannels viaOiio;
+  ASSERT_EQ(oiioModule().read(dir.file("x.exr"), viaOiio), "");
+  ASSERT_EQ(viaOiio.width, 13);
+  ASSERT_EQ(viaOiio.height, 7);
+  ASSERT_EQ(viaOiio.channels(), 6u);
+  int rgb[3];
+  rgbChannelIndices(viaOiio, rgb);
+  const int aov = channelIndex(viaOiio, "technique.G");
+  ASSERT_GE(aov, 0);
+  for (size_t i = 0; i < img.pixels.size(); ++i) {
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(viaOiio.data[i * 6 + rgb[c]], img.pixels[i][c]) << i;
+    EXPECT_EQ(viaOiio.data[i * 6 + aov], img.aovs["technique"][i].g) << i;
+  }
+  // And the other way: an EXR that OpenImageIO wrote reads here.
+  ImageChannels other;
+  other.width = 3;
+  other.height = 2;
+  other.names = {"R", "G", "B"};
+  other.data = {0.5f, 1, 2, 4, 8, 16, 0.25f, 0.125f, 3, 5, 6, 7, 9, 10, 11, 12, 13, 14};
+  ASSERT_EQ(oiioModule().write(dir.file("oiio.exr"), dir.file("oiio.exr"), other), "");
+  const Image back = readImage(dir.file("oiio.exr"));
+  ASSERT_EQ(back.width, 3);
+  for (size_t i = 0; i < 6; ++i)
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(back.pixels[i][c], other.data[3 * i + c]) << i;
 }
 
 TEST(ImageIo, PngIsSrgbEncodedAndClamped) {
