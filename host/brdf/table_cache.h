@@ -1,7 +1,7 @@
 #pragma once
 // Disk cache of precomputed BRDF tables (and order choices), shared by concurrent renders.
-// Directory: the explicit one, else $RC_CACHE_DIR, else $XDG_CACHE_HOME/rcache, else
-// ~/.cache/rcache. One file per key, named by the key's 64-bit FNV-1a hash:
+// Directory: the explicit one, else userCacheDir() ($RC_CACHE_DIR, $XDG_CACHE_HOME/rcache or
+// ~/.cache/rcache). One file per key, named by the key's 64-bit FNV-1a hash:
 //   magic "RCBRDFT1" | u32 format version | u32 key length | key text | u64 key hash |
 //   i32 kind, order, res | u64 float count | float payload[count] | u64 FNV-1a of all preceding bytes
 // (host byte order: the cache is per machine). Files are written to a temporary sibling and
@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "core/user_cache.h"  // fnv1a64, userCacheDir
+
 namespace rc {
 
 constexpr uint32_t kBrdfCacheFormatVersion = 1;
@@ -21,8 +23,6 @@ struct CachedBlob {
   int32_t kind = 0, order = 0, res = 0;
   std::vector<float> payload;
 };
-
-uint64_t fnv1a64(const void* data, size_t size, uint64_t hash = 0xcbf29ce484222325ULL);
 
 // The directory the cache would use (no file-system access).
 std::string resolveBrdfCacheDir(const std::string& explicitDir);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "cl/embedded_kernels.h"
+#include "cl/program_binary_cache.h"
 #include "core/error.h"
 
 namespace rc::cl {
@@ -263,7 +264,15 @@ cl_program Context::program(const std::vector<std::string>& files, const std::st
   // -cl-std pins OpenCL C 1.2; no fast-math: NaN/Inf tests (isfinite) must stay meaningful.
   const std::string fullOptions = "-cl-std=CL1.2 " + options;
   for (const std::string& f : files) sources.push_back(assembleSource(f));
-  cl_program prog = buildProgram(context_, info_.device, sources, fullOptions, display);
+  const ProgramBinaryCache binaries;
+  const std::string binaryKey = ProgramBinaryCache::keyFor(info_, fullOptions, sources);
+  cl_program prog = binaries.load(context_, info_.device, binaryKey, fullOptions);
+  if (prog) {
+    ++programsFromBinaryCache_;
+  } else {
+    prog = buildProgram(context_, info_.device, sources, fullOptions, display);
+    binaries.store(prog, binaryKey);
+  }
   programs_.emplace_back(key, prog);
   return prog;
 }

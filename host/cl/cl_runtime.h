@@ -64,7 +64,10 @@ class Context {
   cl_command_queue queue() const { return queue_; }
   // Program built from the kernel files `files` (several families share one program so a
   // (device, options) pair compiles once). Cached; the program lives as long as the Context.
+  // Built programs come from the disk cache of program binaries when it holds them
+  // (cl/program_binary_cache.h), else from source (and are then stored there).
   cl_program program(const std::vector<std::string>& files, const std::string& options);
+  int programsFromBinaryCache() const { return programsFromBinaryCache_; }
   std::mutex& queueMutex() { return queueMutex_; }  // serialises enqueue+wait sequences
 
  private:
@@ -74,6 +77,7 @@ class Context {
   cl_command_queue queue_ = nullptr;
   std::mutex mutex_, queueMutex_;
   std::vector<std::pair<std::string, cl_program>> programs_;  // key = files + '\n' + options
+  int programsFromBinaryCache_ = 0;
 };
 
 // RAII device buffer.
