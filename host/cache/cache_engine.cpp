@@ -232,12 +232,13 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
   for (size_t i = 0; i < n; ++i) todo[i] = i;
   for (;;) {
     parallelFor(todo.size(), 64, [&](size_t b, size_t e) {
+      const RadianceCache::Reader reader = cache.reader();
       for (size_t j = b; j < e; ++j) {
         const ShadePoint& sp = pts[todo[j]];
         Lookup& lk = lookups[todo[j]];
-        cache.lookup(sp.hit.p, sp.frame.n, lk);
+        reader.lookup(sp.hit.p, sp.frame.n, lk);
         if (!lk.covered() && relaxedScale > 1.0f) {
-          cache.lookup(sp.hit.p, sp.frame.n, lk, relaxedScale);
+          reader.lookup(sp.hit.p, sp.frame.n, lk, relaxedScale);
           if (lk.covered()) ++stats_.relaxedLookups;
         }
       }
@@ -488,6 +489,7 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
     std::vector<char> lambertian(pts.size(), 0);
     const auto t0 = Clock::now();
     parallelFor(pts.size(), 256, [&](size_t b, size_t e) {
+      const RadianceCache::Reader reader = cache.reader();
       uint64_t contributions = 0, count = 0;
       for (size_t i = b; i < e; ++i) {
         const Bsdf& bsdf = *ctx_.scene.bsdfs[static_cast<size_t>(pts[i].hit.bsdf)];
@@ -495,7 +497,7 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
         lambertian[i] = 1;
         ++count;
         contributions += lookups[i].entries.size();
-        const Color E = cache.cosineIrradiance(lookups[i], pts[i].frame.n, params_.gradients);
+        const Color E = reader.cosineIrradiance(lookups[i], pts[i].frame.n, params_.gradients);
         const Color Lo = glm::max(bsdf.eval(pts[i].wo, Vec3(0, 0, 1)) * E, Color(0.0f));
         out[i] = isFinite(Lo) ? Lo : Color(0.0f);
       }

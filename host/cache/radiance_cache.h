@@ -54,6 +54,25 @@ class RadianceCache {
   // Contributions at (p, n): every record with w_i > 1/a_i that is not in front of p. With
   // scale > 1 (relaxed lookup), records count as if their a_i were scale·a_i.
   void lookup(const Vec3& p, const Vec3& n, Lookup& out, float scale = 1.0f) const;
+
+  // Holds the shared lock over a run of lookups: batches look up thousands of points per chunk,
+  // and taking and releasing the lock per point (two atomic read-modify-writes on one shared
+  // cache line between the threads) cost ≈ 5 % of a 512² render (perf).
+  class Reader {
+   public:
+    explicit Reader(const RadianceCache& cache) : cache_(cache), lock_(cache.mutex_) {}
+    void lookup(const Vec3& p, const Vec3& n, Lookup& out, float scale = 1.0f) const {
+      cache_.lookupLocked(p, n, out, false, scale);
+    }
+    Color cosineIrradiance(const Lookup& lk, const Vec3& n, bool gradients) const {
+      return cache_.cosineIrradianceLocked(lk, n, gradients);
+    }
+
+   private:
+    const RadianceCache& cache_;
+    std::shared_lock<std::shared_mutex> lock_;
+  };
+  Reader reader() const { return Reader(*this); }
   // Brute-force version of lookup (tests, and a cross-check of the octree).
   void lookupBruteForce(const Vec3& p, const Vec3& n, Lookup& out, float scale = 1.0f) const;
 
@@ -92,6 +111,7 @@ class RadianceCache {
   RecordOctree octree_;
   float maxReach_ = 0.0f;  // largest a_i·R_i ever inserted (bounds relaxed queries)
   void lookupLocked(const Vec3& p, const Vec3& n, Lookup& out, bool brute, float scale = 1.0f) const;
+  Color cosineIrradianceLocked(const Lookup& lk, const Vec3& n, bool gradients) const;
 };
 
 }  // namespace rc
