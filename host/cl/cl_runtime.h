@@ -1,6 +1,7 @@
 #pragma once
 // OpenCL runtime: device enumeration and selection, one shared context + queue per device, and
 // programs built from the (embedded or on-disk) kernel sources, cached per (device, file, options).
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -67,7 +68,7 @@ class Context {
   // Built programs come from the disk cache of program binaries when it holds them
   // (cl/program_binary_cache.h), else from source (and are then stored there).
   cl_program program(const std::vector<std::string>& files, const std::string& options);
-  int programsFromBinaryCache() const { return programsFromBinaryCache_; }
+  int programsFromBinaryCache() const { return programsFromBinaryCache_.load(); }
   std::mutex& queueMutex() { return queueMutex_; }  // serialises enqueue+wait sequences
 
  private:
@@ -77,7 +78,7 @@ class Context {
   cl_command_queue queue_ = nullptr;
   std::mutex mutex_, queueMutex_;
   std::vector<std::pair<std::string, cl_program>> programs_;  // key = files + '\n' + options
-  int programsFromBinaryCache_ = 0;
+  std::atomic<int> programsFromBinaryCache_{0};
 };
 
 // RAII device buffer.

@@ -23,6 +23,8 @@ void FallbackBackend::run(Call&& call, double& seconds, long long& items, long l
   if (!fellBack_) {
     try {
       call(*primary_);
+      times_.programs = primary_->times().programs;
+      times_.programsFromBinaryCache = primary_->times().programsFromBinaryCache;
       seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       items += count;
       return;

@@ -76,7 +76,10 @@ OpenClBackend::OrderState& OpenClBackend::state(int order) {
   auto st = std::make_unique<OrderState>();
   st->order = order;
   const std::string options = "-D RC_ORDER=" + std::to_string(order) + " -D RC_VEC=" + std::to_string(vec_);
+  const int cachedBefore = ctx_->programsFromBinaryCache();
   cl_program prog = ctx_->program(kProgramFiles, options);
+  ++times_.programs;
+  times_.programsFromBinaryCache += ctx_->programsFromBinaryCache() - cachedBefore;
   st->basis = cl::Kernel(prog, "rc_sh_basis");
   st->prep = cl::Kernel(prog, "rc_project_prep");
   st->gradPrep = cl::Kernel(prog, "rc_grad_prep");

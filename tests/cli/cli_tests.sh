@@ -108,6 +108,17 @@ else
   fail rcache_render "exit $?"
 fi
 
+# The second of two identical renders takes its OpenCL programs from the disk cache of program
+# binaries (when the device is OpenCL; the scalar fallback builds none).
+"$RC" "$DATA/tiny.xml" --integrator rcache -D res=8 -D rays=64 --spp 1 -o "$TMP/bc1.exr" --quiet --stats "$TMP/bc1.json" -t 2 \
+  && "$RC" "$DATA/tiny.xml" --integrator rcache -D res=8 -D rays=64 --spp 1 -o "$TMP/bc2.exr" --quiet --stats "$TMP/bc2.json" -t 2
+python3 - "$TMP/bc2.json" <<'PY' && pass program_binary_cache || fail program_binary_cache "$(cat "$TMP/bc2.json")"
+import json, sys
+s = json.load(open(sys.argv[1]))
+if s["device"].startswith("OpenCL"):
+    assert s["kernel_programs"] > 0 and s["kernel_programs_from_binary_cache"] == s["kernel_programs"], s
+PY
+
 # A render to EXR never loads OpenImageIO (its ≈ 260 libraries cost 0.22 s per process); one to PNG
 # loads it on demand and writes the file.
 if LD_DEBUG=files "$RC" "$DATA/tiny.xml" -D res=8 --spp 1 -o "$TMP/nooiio.exr" --quiet 2> "$TMP/ld.log" \
