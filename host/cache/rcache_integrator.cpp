@@ -536,7 +536,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   stats.set("kernel_interpolate_s", kt.interpolate_s);
   stats.set("kernel_brdf_dot_s", kt.brdfDot_s);
   stats.set("kernel_programs", kt.programs);
-  stats.set("kernel_programs_from_binary_cache", kt.programsFromBinaryCache);
+  stats.set("kernel_programs_cached", kt.programsFromBinaryCache);
   stats.setText("device", backend->deviceName());
   stats.setText("sampler", lowDiscrepancy ? "ldsampler" : "independent");
   stats.setText("interpolation_frame", params_.autoFrame ? "auto" : params_.worldFrame ? "world" : "record");

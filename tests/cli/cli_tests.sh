@@ -116,7 +116,7 @@ python3 - "$TMP/bc2.json" <<'PY' && pass program_binary_cache || fail program_bi
 import json, sys
 s = json.load(open(sys.argv[1]))
 if s["device"].startswith("OpenCL"):
-    assert s["kernel_programs"] > 0 and s["kernel_programs_from_binary_cache"] == s["kernel_programs"], s
+    assert s["kernel_programs"] > 0 and s["kernel_programs_cached"] == s["kernel_programs"], s
 PY
 
 # A render to EXR never loads OpenImageIO (its ≈ 260 libraries cost 0.22 s per process); one to PNG
