@@ -187,11 +187,12 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
       // The last pass looks up the centres of the four quadrants of pixels at surface edges: the
       // final pass's jittered samples then find records on every surface a pixel shows, also
       // faces that only a sub-pixel sliver of it sees, instead of creating them during shading
-      // (which means shading earlier bands again: 166 of 256 bands on the 512² Cornell box at
-      // 64 spp with pixel centres only). Inside a surface the pixel's centre is enough: a
+      // (which means shading earlier bands again; with pixel centres only, 166 of 256 bands on
+      // the 512² Cornell box at 64 spp were). Inside a surface the pixel's centre is enough: a
       // jittered sample lies within 0.71 px of it and the final pass's relaxed lookup reaches
-      // twice a record's radius (r_min ≥ 1.5 px). Quadrants everywhere cost 4 lookups per
-      // pixel, a quarter of the fill's time at 512².
+      // twice a record's radius (r_min ≥ 1.5 px). Quadrants in every pixel cost 4 lookups per
+      // pixel, a quarter of the fill's time at 512²; at edges only, no band of the shipped
+      // scenes is shaded again (bands_reshaded = 0, tested).
       std::vector<uint8_t> edges;
       if (stride == 1) {
         edges = surfaceEdgePixels(ctx.accel, camera, W, H);
@@ -276,7 +277,13 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   // Shades the samples ranges[q] of the pixels q of rows [y0, y0 + pixels / W) into `tile`.
   auto shadeSamples = [&](int y0, const SampleRange* ranges, size_t pixels, TileFilm& tile) {
     std::vector<size_t> offset(pixels + 1, 0);
-    for (size_t q = 0; q < pixels; ++q) offset[q + 1] = offset[q] + static_cast<size_t>(ranges[q].count());
+    // The pixels that take samples: all in a band's first round, a few in adaptive rounds (which
+    // then do not walk the empty ones).
+    std::vector<uint32_t> active;
+    for (size_t q = 0; q < pixels; ++q) {
+      offset[q + 1] = offset[q] + static_cast<size_t>(ranges[q].count());
+      if (ranges[q].count() > 0) active.push_back(static_cast<uint32_t>(q));
+    }
     const size_t n = offset[pixels];
     if (n == 0) return;
     std::vector<Primary> prim(n);
@@ -289,19 +296,20 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     // lookup per sample. rep[i] = the sample whose lookup sample i uses. Everything per pixel
     // runs in parallel over pixels.
     std::vector<uint32_t> rep(n);
-    parallelFor(pixels, 16, [&](size_t pb, size_t pe) {
+    parallelFor(active.size(), 16, [&](size_t jb, size_t je) {
       std::vector<uint32_t> pixelReps;
       uint64_t lightOnlyCount = 0;
       // One stream per sample: camera, then direct light, then (importance-sampled materials)
       // the continuation's BSDF sample, all from the pixel's low-discrepancy dimensions where
       // the sampler is ldsampler. The chunk's camera rays are traced first, as one coherent stream.
-      const size_t first = offset[pb], count = offset[pe] - offset[pb];
+      const size_t first = offset[active[jb]], count = offset[active[je - 1] + 1] - first;
       std::vector<Rng> rngs;
       rngs.reserve(count);
       std::vector<Ray> rays(count);
       std::vector<Hit> hits(count);
       std::vector<Vec2> fpos(count);
-      for (size_t q = pb; q < pe; ++q) {
+      for (size_t j = jb; j < je; ++j) {
+        const size_t q = active[j];
         const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
         for (int s = ranges[q].first; s < ranges[q].end; ++s) {
           const size_t k = offset[q] + (s - ranges[q].first) - first;
@@ -311,7 +319,8 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
         }
       }
       ctx.accel.intersect(rays.data(), hits.data(), count, true);
-      for (size_t q = pb; q < pe; ++q) {
+      for (size_t j = jb; j < je; ++j) {
+        const size_t q = active[j];
         const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
         pixelReps.clear();
         for (int s = ranges[q].first; s < ranges[q].end; ++s) {
@@ -438,6 +447,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
           if (samples > 0 && samples + row > kSamplesPerBand) break;  // a row alone may exceed it
           samples += row;
           ++y1;
+          if (samples == 0) y0 = y1;  // a run starts at its first row with samples
         }
         if (cancelled()) {
           interrupted = true;

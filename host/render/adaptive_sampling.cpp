@@ -16,7 +16,8 @@ int effectiveMaxSpp(const AdaptiveSettings& s, int spp) {
 
 AdaptivePixels::AdaptivePixels(int width, int height, int spp, const AdaptiveSettings& settings)
     : settings_(settings), width_(width), height_(height), spp_(spp), maxSpp_(effectiveMaxSpp(settings, spp)),
-      px_(static_cast<size_t>(width) * height), ranges_(px_.size()), dirty_(px_.size(), 1) {
+      px_(static_cast<size_t>(width) * height), ranges_(px_.size()), error_(px_.size(), 0.0f),
+      rowMax_(px_.size(), 0.0f), dirty_(px_.size(), 1), rowHasRange_(static_cast<size_t>(height), 0) {
   restart(0, px_.size());
 }
 
@@ -27,6 +28,7 @@ void AdaptivePixels::restart(size_t begin, size_t end) {
     px_[p].halfN = spp_ / 2;
     ranges_[p] = SampleRange{0, spp_};
     dirty_[p] = 1;
+    rowHasRange_[p / static_cast<size_t>(width_)] = 1;
   }
 }
 
@@ -52,33 +54,49 @@ float AdaptivePixels::errorSquared(size_t p) const {
 }
 
 bool AdaptivePixels::nextRound() {
-  for (size_t p = 0; p < px_.size(); ++p) ranges_[p] = SampleRange{px_[p].n, px_[p].n};
-  if (!settings_.enabled()) return false;
-  // Largest error in each pixel's neighbourhood: separable max filter (rows, then columns).
   const size_t W = static_cast<size_t>(width_), H = static_cast<size_t>(height_);
-  // Error estimates change only where samples were added since the last round.
-  std::vector<float>& e = error_;
-  e.resize(px_.size(), 0.0f);
-  for (size_t p = 0; p < px_.size(); ++p)
-    if (dirty_[p]) {
-      e[p] = errorSquared(p);
-      dirty_[p] = 0;
-    }
-  std::vector<float> rowMax(px_.size());
+  // Last round's ranges end.
+  for (size_t y = 0; y < H; ++y) {
+    if (!rowHasRange_[y]) continue;
+    rowHasRange_[y] = 0;
+    for (size_t p = y * W; p < (y + 1) * W; ++p) ranges_[p] = SampleRange{px_[p].n, px_[p].n};
+  }
+  if (!settings_.enabled()) return false;
+  // Error estimates, and the row maxima of the separable max filter, change only in rows that
+  // took samples since the last round; a pixel decides differently from last round only if its
+  // neighbourhood holds such a row (it was then refined and took samples itself, or it was
+  // below the threshold or at the cap and still is). So each round touches the rows around the
+  // pixels still being refined, not the whole image: late rounds refine a few hundred pixels.
+  std::vector<char> rowDirty(H, 0);
+  bool anyDirty = false;
   for (size_t y = 0; y < H; ++y)
+    for (size_t p = y * W; p < (y + 1) * W; ++p) {
+      if (!dirty_[p]) continue;
+      error_[p] = errorSquared(p);
+      dirty_[p] = 0;
+      rowDirty[y] = 1;
+      anyDirty = true;
+    }
+  if (!anyDirty) return false;
+  const size_t R = static_cast<size_t>(kAdaptiveWindow);
+  for (size_t y = 0; y < H; ++y) {
+    if (!rowDirty[y]) continue;
     for (size_t x = 0; x < W; ++x) {
       float m = 0.0f;
-      for (size_t u = x > size_t(kAdaptiveWindow) ? x - kAdaptiveWindow : 0; u <= std::min(W - 1, x + kAdaptiveWindow); ++u)
-        m = std::max(m, e[y * W + u]);
-      rowMax[y * W + x] = m;
+      for (size_t u = x > R ? x - R : 0; u <= std::min(W - 1, x + R); ++u) m = std::max(m, error_[y * W + u]);
+      rowMax_[y * W + x] = m;
     }
+  }
   const float t2 = settings_.threshold * settings_.threshold;
   bool any = false;
-  for (size_t y = 0; y < H; ++y)
+  for (size_t y = 0; y < H; ++y) {
+    const size_t v0 = y > R ? y - R : 0, v1 = std::min(H - 1, y + R);
+    bool near = false;
+    for (size_t v = v0; v <= v1 && !near; ++v) near = rowDirty[v] != 0;
+    if (!near) continue;
     for (size_t x = 0; x < W; ++x) {
       float m = 0.0f;
-      for (size_t v = y > size_t(kAdaptiveWindow) ? y - kAdaptiveWindow : 0; v <= std::min(H - 1, y + kAdaptiveWindow); ++v)
-        m = std::max(m, rowMax[v * W + x]);
+      for (size_t v = v0; v <= v1; ++v) m = std::max(m, rowMax_[v * W + x]);
       Pixel& px = px_[y * W + x];
       if (px.n >= maxSpp_ || !(m > t2)) continue;
       // The samples so far become the "first half" of the doubled set.
@@ -86,8 +104,10 @@ bool AdaptivePixels::nextRound() {
       px.halfN = px.n;
       px.n = std::min(maxSpp_, 2 * px.n);
       ranges_[y * W + x] = SampleRange{px.halfN, px.n};
+      rowHasRange_[y] = 1;
       any = true;
     }
+  }
   return any;
 }
 

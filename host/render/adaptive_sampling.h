@@ -72,8 +72,10 @@ class AdaptivePixels {
   int width_, height_, spp_, maxSpp_;
   std::vector<Pixel> px_;
   std::vector<SampleRange> ranges_;
-  std::vector<float> error_;  // errorSquared per pixel, as of the last round
-  std::vector<char> dirty_;   // samples added since error_ was computed (one writer per pixel)
+  std::vector<float> error_;   // errorSquared per pixel, as of the last round
+  std::vector<float> rowMax_;  // max of error_ over each pixel's row neighbourhood (±kAdaptiveWindow)
+  std::vector<char> dirty_;    // samples added since error_ was computed (one writer per pixel)
+  std::vector<char> rowHasRange_;  // rows holding a pixel whose current range is not empty
 };
 
 struct RenderStats;  // render/integrator.h
