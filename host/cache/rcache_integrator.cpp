@@ -430,10 +430,14 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   // Adaptive sampling: rounds over the bands that hold pixels needing more samples. Should a
   // round create records (a new sample position found no record even with the relaxed lookup),
   // every band is shaded again with the final caches and the rounds start over, once.
-  std::vector<std::unique_ptr<TileFilm>> adaptiveFilms;
+  // The rounds' tiles are merged as they finish into one film of their own (a tile per run of
+  // rows and round, up to 8 MB each at 512², held until the end made adaptive renders' peak
+  // memory grow by 100+ MB); it is dropped if the rounds start over.
+  std::unique_ptr<Film> adaptiveFilm;
   for (int attempt = 0; attempt < 2 && !interrupted; ++attempt) {
     const size_t recordsBefore = totalRecords();
-    adaptiveFilms.clear();
+    adaptiveFilm.reset();
+    if (ctx.options.adaptive.enabled()) adaptiveFilm = std::make_unique<Film>(scene.film, W, H);
     for (int round = 1; !interrupted && adaptive.nextRound(); ++round) {
       // Runs of rows holding ≈ kSamplesPerBand of the round's samples (few pixels take more, so
       // one engine call spans many rows and its kernel launches stay few).
@@ -457,7 +461,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
           const size_t begin = static_cast<size_t>(y0) * W, end = static_cast<size_t>(y1) * W;
           auto tile = std::make_unique<TileFilm>(film.makeTile(0, y0, W, y1));
           shadeSamples(y0, r + begin, end - begin, *tile);
-          adaptiveFilms.push_back(std::move(tile));
+          adaptiveFilm->merge(*tile);
         }
         if (ctx.progress) ctx.progress("render (adaptive " + std::to_string(round) + ")", double(y1), double(H));
         y0 = y1;
@@ -469,7 +473,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   }
   for (auto& t : bandFilms)
     if (t) film.merge(*t);
-  for (auto& t : adaptiveFilms) film.merge(*t);
+  if (adaptiveFilm) film.add(*adaptiveFilm);
   const double finalS = since(t0);
 
   Image img = film.develop();

@@ -130,6 +130,20 @@ void Film::merge(const TileFilm& tile) {
   }
 }
 
+void Film::add(const Film& other) {
+  if (other.width_ != width_ || other.height_ != height_) throw Error("Film::add: films of different sizes");
+  for (size_t i = 0; i < sum_.size(); ++i) sum_[i] += other.sum_[i];
+  for (const auto& [name, a] : other.aovs_) {
+    AovAccum& dst = aovs_[name];
+    if (dst.sum.empty()) {
+      dst.sum.assign(a.sum.size(), 0.0);
+      dst.count.assign(a.count.size(), 0);
+    }
+    for (size_t i = 0; i < a.sum.size(); ++i) dst.sum[i] += a.sum[i];
+    for (size_t i = 0; i < a.count.size(); ++i) dst.count[i] += a.count[i];
+  }
+}
+
 void Film::splat(Vec2 pos, const Color& L) {
   forEachFootprint(filter_, pos, width_, height_, [&](int ix, int iy, float w) {
     double* s = &sum_[(static_cast<size_t>(iy) * width_ + ix) * 4];

@@ -66,6 +66,8 @@ class Film {
   TileFilm makeTile(int x0, int y0, int x1, int y1) const;
   // Adds a tile's sums. Call in a fixed order (e.g. tile index) for bit-identical results.
   void merge(const TileFilm& tile);
+  // Adds another film's sums (same size): e.g. the adaptive rounds, kept apart until they are final.
+  void add(const Film& other);
   // Convenience for single-threaded use (tests): splat straight into the film.
   void splat(Vec2 filmPos, const Color& L);
 
