@@ -52,6 +52,9 @@ ImageChannels readExr(const std::string& path) {
       image.names.push_back(it.name());
     if (image.names.empty()) throw Error(path + ": cannot read image (no channels)");
     const size_t C = image.channels();
+    if (static_cast<double>(W) * static_cast<double>(H) * static_cast<double>(C) > double(1u << 30))
+      throw Error(path + ": cannot read image (" + std::to_string(C) + " channels of " + std::to_string(W) + "x" +
+                  std::to_string(H) + " is too large)");
     image.data.assign(static_cast<size_t>(W) * static_cast<size_t>(H) * C, 0.0f);
     Imf::FrameBuffer fb;
     const size_t xStride = C * sizeof(float), yStride = xStride * static_cast<size_t>(W);
