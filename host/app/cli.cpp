@@ -20,6 +20,8 @@
 #include "cl/verify.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "image/image_file.h"
+#include "image/oiio_module.h"
 #include "core/parallel.h"
 #include "geometry/accel.h"
 #include "render/image_io.h"
@@ -49,17 +51,13 @@ std::string defaultOutputPath(const std::string& scenePath) {
 }
 
 // Fails before a long render rather than after it: the format must be known and the directory writable.
-bool isSupportedImageExtension(const std::string& path) {
-  const size_t dot = path.find_last_of('.');
-  if (dot == std::string::npos) return false;
-  std::string ext = path.substr(dot);
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".exr" || ext == ".png" || ext == ".hdr";
-}
-
 void checkOutputWritable(const std::string& path) {
-  if (!isSupportedImageExtension(path))
+  const std::string ext = lowerExtension(path);
+  if (ext != ".exr" && ext != ".png" && ext != ".hdr")
     throw Error(path + ": unsupported output format (use .exr, .png or .hdr)");
+  // PNG and HDR are written through the OpenImageIO module: load it now, so that a missing module
+  // is an error before the render instead of after it.
+  if (ext != ".exr") oiioModule();
   const size_t slash = path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
   if (access(dir.c_str(), W_OK) != 0) throw Error(path + ": directory '" + dir + "' is not writable");

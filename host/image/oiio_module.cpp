@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <mutex>
 #include <vector>
 
@@ -36,9 +37,13 @@ const OiioModuleApi& oiioModule() {
   static std::string failure;
   std::call_once(once, [] {
     std::vector<std::string> candidates;
-    const std::string dir = executableDirectory();
+    // RC_OIIO_MODULE names the module explicitly (a packaged install, or tests); then only it is tried.
+    const char* explicitPath = std::getenv("RC_OIIO_MODULE");
+    if (explicitPath && *explicitPath) candidates.push_back(explicitPath);
+    const std::string dir = candidates.empty() ? executableDirectory() : "";
     if (!dir.empty()) candidates.push_back(dir + "/" + RC_OIIO_MODULE_NAME);
-    if (std::string(RC_OIIO_MODULE_PATH) != "") candidates.push_back(RC_OIIO_MODULE_PATH);
+    const std::string built = RC_OIIO_MODULE_PATH;
+    if (!explicitPath && !built.empty() && (candidates.empty() || candidates.front() != built)) candidates.push_back(built);
     for (const std::string& path : candidates) {
       // Never unloaded: OpenImageIO keeps global state for the rest of the process.
       void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);

@@ -119,6 +119,16 @@ if s["device"].startswith("OpenCL"):
     assert s["kernel_programs"] > 0 and s["kernel_programs_cached"] == s["kernel_programs"], s
 PY
 
+# Without the OpenImageIO module a PNG render fails before rendering, with one message and no file;
+# an EXR render does not need it.
+out=$(RC_OIIO_MODULE=/nonexistent/librc_oiio_module.so "$RC" "$DATA/tiny.xml" -D res=8 --spp 1 -o "$TMP/nomod.png" --quiet 2>&1)
+code=$?
+if [ $code -ne 0 ] && [ ! -e "$TMP/nomod.png" ] && echo "$out" | grep -q "OpenImageIO module" \
+   && [ "$(echo "$out" | wc -l)" -eq 1 ] \
+   && RC_OIIO_MODULE=/nonexistent/librc_oiio_module.so "$RC" "$DATA/tiny.xml" -D res=8 --spp 1 -o "$TMP/nomod.exr" --quiet \
+   && [ -s "$TMP/nomod.exr" ]; then pass openimageio_module_missing
+else fail openimageio_module_missing "exit $code: $out"; fi
+
 # A render to EXR never loads OpenImageIO (its ≈ 260 libraries cost 0.22 s per process); one to PNG
 # loads it on demand and writes the file.
 if LD_DEBUG=files "$RC" "$DATA/tiny.xml" -D res=8 --spp 1 -o "$TMP/nooiio.exr" --quiet 2> "$TMP/ld.log" \
