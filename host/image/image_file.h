@@ -22,8 +22,8 @@ struct ImageChannels {
   size_t channels() const { return names.size(); }
 };
 
-// Writes `image` to `path` in the format of `formatPath`'s extension (writers produce a temporary
-// file first and name the real one in messages). Returns nothing; throws on any failure.
+// Writes `image` to `path` in the format of `formatPath`'s extension: callers write a temporary
+// file and rename it (core/atomic_file.h), and messages name `formatPath`, the file asked for.
 void writeImageFile(const std::string& path, const std::string& formatPath, const ImageChannels& image);
 ImageChannels readImageFile(const std::string& path);
 
