@@ -442,27 +442,48 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
       // Runs of rows holding ≈ kSamplesPerBand of the round's samples (few pixels take more, so
       // one engine call spans many rows and its kernel launches stay few).
       const SampleRange* r = adaptive.ranges().data();
+      // Per row: samples in this round and the columns that take them.
+      std::vector<size_t> rowSamples(static_cast<size_t>(H), 0);
+      std::vector<int> rowX0(static_cast<size_t>(H), W), rowX1(static_cast<size_t>(H), 0);
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+          const int c = r[static_cast<size_t>(y) * W + x].count();
+          if (c <= 0) continue;
+          rowSamples[static_cast<size_t>(y)] += static_cast<size_t>(c);
+          rowX0[static_cast<size_t>(y)] = std::min(rowX0[static_cast<size_t>(y)], x);
+          rowX1[static_cast<size_t>(y)] = std::max(rowX1[static_cast<size_t>(y)], x + 1);
+        }
+      // Runs of rows with samples (a gap of kRunGapRows empty rows ends one), shaded into a tile
+      // just covering their pixels: late rounds refine a few hundred pixels, and a tile spanning
+      // every row between them (zeroed, then merged) cost more than shading them.
+      constexpr int kRunGapRows = 8;
       for (int y0 = 0; y0 < H && !interrupted;) {
+        while (y0 < H && rowSamples[static_cast<size_t>(y0)] == 0) ++y0;
+        if (y0 >= H) break;
         size_t samples = 0;
-        int y1 = y0;
+        int y1 = y0, last = y0, x0 = W, x1 = 0;
         while (y1 < H) {
-          size_t row = 0;
-          for (int x = 0; x < W; ++x) row += static_cast<size_t>(r[static_cast<size_t>(y1) * W + x].count());
+          const size_t row = rowSamples[static_cast<size_t>(y1)];
+          if (row == 0) {
+            if (y1 - last >= kRunGapRows) break;
+            ++y1;
+            continue;
+          }
           if (samples > 0 && samples + row > kSamplesPerBand) break;  // a row alone may exceed it
           samples += row;
-          ++y1;
-          if (samples == 0) y0 = y1;  // a run starts at its first row with samples
+          x0 = std::min(x0, rowX0[static_cast<size_t>(y1)]);
+          x1 = std::max(x1, rowX1[static_cast<size_t>(y1)]);
+          last = y1++;
         }
+        y1 = last + 1;
         if (cancelled()) {
           interrupted = true;
           break;
         }
-        if (samples > 0) {
-          const size_t begin = static_cast<size_t>(y0) * W, end = static_cast<size_t>(y1) * W;
-          auto tile = std::make_unique<TileFilm>(film.makeTile(0, y0, W, y1));
-          shadeSamples(y0, r + begin, end - begin, *tile);
-          adaptiveFilm->merge(*tile);
-        }
+        const size_t begin = static_cast<size_t>(y0) * W, end = static_cast<size_t>(y1) * W;
+        auto tile = std::make_unique<TileFilm>(film.makeTile(x0, y0, x1, y1));
+        shadeSamples(y0, r + begin, end - begin, *tile);
+        adaptiveFilm->merge(*tile);
         if (ctx.progress) ctx.progress("render (adaptive " + std::to_string(round) + ")", double(y1), double(H));
         y0 = y1;
       }
