@@ -29,14 +29,19 @@ int runAnswer(const std::shared_ptr<cl::Context>& ctx, cl_program prog) {
   return v;
 }
 
+// A private cache directory for the test (RC_CACHE_DIR restored afterwards).
 struct CacheDir {
   fs::path path = fs::temp_directory_path() / ("rc_clbin_" + std::to_string(getpid()));
+  std::string previous;
+  bool hadPrevious = false;
   CacheDir() {
+    if (const char* p = std::getenv("RC_CACHE_DIR")) previous = p, hadPrevious = true;
     fs::remove_all(path);
     setenv("RC_CACHE_DIR", path.c_str(), 1);
   }
   ~CacheDir() {
-    unsetenv("RC_CACHE_DIR");
+    if (hadPrevious) setenv("RC_CACHE_DIR", previous.c_str(), 1);
+    else unsetenv("RC_CACHE_DIR");
     fs::remove_all(path);
   }
 };
