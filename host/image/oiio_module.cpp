@@ -39,11 +39,12 @@ const OiioModuleApi& oiioModule() {
     std::vector<std::string> candidates;
     // RC_OIIO_MODULE names the module explicitly (a packaged install, or tests); then only it is tried.
     const char* explicitPath = std::getenv("RC_OIIO_MODULE");
-    if (explicitPath && *explicitPath) candidates.push_back(explicitPath);
+    const bool isExplicit = explicitPath && *explicitPath;  // set and not empty
+    if (isExplicit) candidates.push_back(explicitPath);
     const std::string dir = candidates.empty() ? executableDirectory() : "";
     if (!dir.empty()) candidates.push_back(dir + "/" + RC_OIIO_MODULE_NAME);
     const std::string built = RC_OIIO_MODULE_PATH;
-    if (!explicitPath && !built.empty() && (candidates.empty() || candidates.front() != built)) candidates.push_back(built);
+    if (!isExplicit && !built.empty() && (candidates.empty() || candidates.front() != built)) candidates.push_back(built);
     for (const std::string& path : candidates) {
       // Never unloaded: OpenImageIO keeps global state for the rest of the process.
       void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
