@@ -14,7 +14,10 @@ namespace rc::cl {
 
 namespace {
 
-constexpr char kMagic[8] = {'R', 'C', 'C', 'L', 'B', 'I', 'N', '1'};
+constexpr char kMagic[8] = {'R', 'C', 'C', 'L', 'B', 'I', 'N', '2'};
+// The key (≈ 100 KB of source) is identified by two 64-bit FNV-1a hashes of different offset
+// bases: a wrong program would compute silently wrong results, so 64 bits alone felt thin.
+constexpr uint64_t kSecondBasis = 0x84222325cbf29ce4ULL;
 // A program binary of our kernels is ≈ 0.4 MB; anything claiming more than this is not one.
 constexpr uint64_t kMaxBinaryBytes = uint64_t(1) << 30;
 
@@ -57,10 +60,10 @@ cl_program ProgramBinaryCache::load(cl_context context, cl_device_id device, con
   if (!in) return nullptr;
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   size_t pos = sizeof kMagic;
-  uint64_t hash = 0, size = 0, check = 0;
+  uint64_t hash = 0, hash2 = 0, size = 0, check = 0;
   if (bytes.size() < pos || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) return nullptr;
-  if (!get(bytes, pos, hash) || hash != fnv1a64(key) || !get(bytes, pos, size) || size == 0 || size > kMaxBinaryBytes ||
-      bytes.size() - pos < size + sizeof(uint64_t))
+  if (!get(bytes, pos, hash) || hash != fnv1a64(key) || !get(bytes, pos, hash2) || hash2 != fnv1a64(key, kSecondBasis) ||
+      !get(bytes, pos, size) || size == 0 || size > kMaxBinaryBytes || bytes.size() - pos < size + sizeof(uint64_t))
     return nullptr;
   const size_t payload = pos;
   pos += size;
@@ -91,6 +94,7 @@ void ProgramBinaryCache::store(cl_program program, const std::string& key) const
   if (clGetProgramInfo(program, CL_PROGRAM_BINARIES, sizeof ptr, &ptr, nullptr) != CL_SUCCESS) return;
   std::string file(kMagic, sizeof kMagic);
   put(file, fnv1a64(key));
+  put(file, fnv1a64(key, kSecondBasis));
   put(file, static_cast<uint64_t>(size));
   file.append(reinterpret_cast<const char*>(binary.data()), size);
   put(file, fnv1a64(file.data(), file.size()));

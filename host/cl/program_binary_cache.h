@@ -4,7 +4,8 @@
 // its own cache hits (clang still preprocesses the source to find the entry), from a binary
 // ≈ 3 ms; a render needs 3–4 programs (one per SH order), so ≈ 0.15 s per process.
 // File: <userCacheDir>/cl/<hex FNV-1a of the key>.bin with
-//   magic "RCCLBIN1" | u64 key hash | u64 size | size bytes | u64 FNV-1a of all preceding bytes.
+//   magic "RCCLBIN2" | u64 key hash | u64 second key hash (other FNV basis) | u64 size | size bytes |
+//   u64 FNV-1a of all preceding bytes.
 // The key holds the platform, device and driver versions, the build options and the full source,
 // so any change of these misses. A missing, corrupt or refused binary is rebuilt from source and
 // replaced (files are written atomically); a cache directory that cannot be written only means no
