@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -20,10 +19,10 @@
 #include "cl/verify.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
-#include "image/image_file.h"
-#include "image/oiio_module.h"
 #include "core/parallel.h"
 #include "geometry/accel.h"
+#include "image/image_file.h"
+#include "image/oiio_module.h"
 #include "render/image_io.h"
 #include "render/light_sampler.h"
 #include "render/path_integrator.h"
