@@ -15,7 +15,8 @@ struct FactoryEntry {
   size_t minNested, maxNested;
 };
 
-// The factory table: Mitsuba 3 plugin name → constructor and the number of nested BSDFs it takes.
+// The factory table: Mitsuba 3 plugin name → constructor and the number of nested BSDFs it takes
+// ("merl" is an rcache extension).
 const FactoryEntry kFactory[] = {
     {"diffuse", createDiffuseBsdf, 0, 0},
     {"roughconductor", createRoughConductorBsdf, 0, 0},
@@ -25,6 +26,7 @@ const FactoryEntry kFactory[] = {
     {"dielectric", createDielectricBsdf, 0, 0},
     {"twosided", createTwoSidedBsdf, 1, 2},
     {"blendbsdf", createBlendBsdf, 2, 2},
+    {"merl", createMerlBsdf, 0, 0},
 };
 
 const FactoryEntry* findEntry(const std::string& type) {

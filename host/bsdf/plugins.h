@@ -18,5 +18,6 @@ std::shared_ptr<Bsdf> createRoughPlasticBsdf(const Properties& props, const std:
 std::shared_ptr<Bsdf> createDielectricBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
 std::shared_ptr<Bsdf> createTwoSidedBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
 std::shared_ptr<Bsdf> createBlendBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+std::shared_ptr<Bsdf> createMerlBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
 
 }  // namespace rc

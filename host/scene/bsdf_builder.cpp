@@ -5,8 +5,17 @@
 namespace rc {
 
 BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
-  const Element e = parseElement(file, node);
+  Element e = parseElement(file, node);
   if (e.type.empty()) e.fail("missing attribute 'type'");
+  // A BSDF's data file (merl's measured table) is found like a mesh: relative to the scene file.
+  if (auto it = e.raw.find("filename");
+      it != e.raw.end() && !it->second.empty() && node.find_child_by_attribute("string", "name", "filename")) {
+    Property resolved;
+    resolved.type = Property::Type::String;
+    resolved.text = resolvePath(e, it->second);
+    resolved.line = e.props.lineOf("filename");
+    e.props.set("filename", resolved);
+  }
   std::vector<BsdfPtr> nested;
   for (const pugi::xml_node& child : e.children) {
     const std::string tag = child.name();
