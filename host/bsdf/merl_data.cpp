@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -94,6 +95,8 @@ Color MerlData::lookup(const HalfDiffAngles& a) const {
 
 MerlData readMerlFile(const std::string& path, bool clampNegative) {
   auto fail = [&](const std::string& why) -> void { throw Error("MERL file " + path + ": " + why); };
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) fail("is a directory");
   std::ifstream f(path, std::ios::binary);
   if (!f) fail(std::string("cannot open (") + std::strerror(errno) + ")");
   std::ostringstream ss;

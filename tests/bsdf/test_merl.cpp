@@ -78,6 +78,7 @@ TEST(MerlFile, MalformedFilesGiveOneMessageNamingTheFile) {
   const std::string good = readBytes(path);
 
   EXPECT_NE(readError(scratchPath("missing.binary")).find("missing.binary: cannot open"), std::string::npos);
+  EXPECT_NE(readError(fs::current_path().string()).find(": is a directory"), std::string::npos);
 
   writeBytes(path, good.substr(0, 7));
   EXPECT_NE(readError(path).find(path + ": truncated header"), std::string::npos) << readError(path);
