@@ -1,3 +1,6 @@
 # End-to-end CLI tests (bad input, outputs, determinism, interrupt) driven by a shell script.
 add_test(NAME cli COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/cli_tests.sh $<TARGET_FILE:rcache>)
 set_tests_properties(cli PROPERTIES LABELS cli TIMEOUT 300)
+# The merl BSDF end to end: generator, relative file name, render, bad file.
+add_test(NAME cli_merl COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/merl_tests.sh $<TARGET_FILE:rcache> $<TARGET_FILE:merl_generate>)
+set_tests_properties(cli_merl PROPERTIES LABELS cli TIMEOUT 120)

@@ -9,8 +9,8 @@
 // One-sided reflection: f(ω_o, ω_i) is the table at the pair's half/difference angles
 // (Rusinkiewicz), trilinear between the nodes. The reference reader takes the nearest node below
 // (it truncates the index); trilinear has O(h²) instead of O(h) discretisation error, which matters
-// where the table is coarse relative to the lobe: a 1° step in θ_d across a Fresnel rise, or θ_h
-// steps of up to 2° at the rim, turn a smooth highlight into visible bands with nearest lookup.
+// where the table is coarse relative to the lobe (a 1° step in θ_d across a Fresnel rise, θ_h
+// steps of up to 2° at the rim) and keeps the lookup continuous, so highlights show no bands.
 // At the nodes both agree. Reciprocity is exact: the table stores φ_d ∈ [0, π) and the swap of
 // ω_i and ω_o maps φ_d to φ_d + π, which folds onto the same entry (the lookup wraps φ_d
 // periodically across π, so the interpolation is symmetric too).
