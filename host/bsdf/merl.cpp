@@ -77,6 +77,7 @@ class MerlBsdf final : public Bsdf {
   }
 
   // Treated as glossy: the data may hold any lobe, so rcache chooses its order from the projection.
+  // glossyAlpha() keeps the default (no microfacet width is known for measured data).
   uint32_t lobes() const override { return kLobeGlossy; }
   std::string parameterKey() const override { return key_; }
   std::string typeName() const override { return "merl"; }

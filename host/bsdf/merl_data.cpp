@@ -5,7 +5,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -97,12 +96,13 @@ MerlData readMerlFile(const std::string& path, bool clampNegative) {
   auto fail = [&](const std::string& why) -> void { throw Error("MERL file " + path + ": " + why); };
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) fail("is a directory");
-  std::ifstream f(path, std::ios::binary);
+  std::ifstream f(path, std::ios::binary | std::ios::ate);
   if (!f) fail(std::string("cannot open (") + std::strerror(errno) + ")");
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  if (f.bad()) fail("read error");
-  const std::string bytes = ss.str();
+  const std::streamoff size = f.tellg();
+  if (size < 0) fail("cannot determine the file's length");
+  std::string bytes(static_cast<size_t>(size), '\0');
+  f.seekg(0);
+  if (!f.read(bytes.data(), size)) fail("read error");
   if (bytes.size() < 3 * sizeof(int32_t))
     fail("truncated header (" + std::to_string(bytes.size()) + " bytes, the three int32 dimensions need 12)");
   int32_t dims[3];
