@@ -12,7 +12,8 @@ __kernel void rc_interpolate(const int points, const int worldFrame, const int g
                              __global const float* lambda, __global const float* gradT,
                              __global const float* gradB, __global const float* recordFrames,
                              __global const float* pointFrames, __global const int* offsets,
-                             __global const RcContribution* entries, __constant const float* J,
+                             __global const RcContribution* entries, __constant const int* rowStart,
+                             __constant const RcSparseEntry* J,
                              __global float* out) {
   const int p = get_global_id(0);
   if (p >= points) return;
@@ -46,7 +47,7 @@ __kernel void rc_interpolate(const int points, const int worldFrame, const int g
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b)
           R[3 * a + b] = Fp[3 * a] * Fr[3 * b] + Fp[3 * a + 1] * Fr[3 * b + 1] + Fp[3 * a + 2] * Fr[3 * b + 2];
-      rc_rotate3(v, R, J);
+      rc_rotate3(v, R, rowStart, J);
       for (int i = 0; i < 3 * RC_N2; ++i) acc[i] = fma(c.weight, v[i], acc[i]);
     }
     wsum += c.weight;
@@ -58,6 +59,6 @@ __kernel void rc_interpolate(const int points, const int worldFrame, const int g
   }
   const float inv = 1.0f / wsum;
   for (int i = 0; i < 3 * RC_N2; ++i) acc[i] *= inv;
-  if (worldFrame) rc_rotate3(acc, Fp, J); /* world → p: Rot(a,b) = e_p,a · world_b = Fp[3a+b] */
+  if (worldFrame) rc_rotate3(acc, Fp, rowStart, J); /* world → p: Rot(a,b) = e_p,a · world_b = Fp[3a+b] */
   for (int i = 0; i < 3 * RC_N2; ++i) dst[i] = acc[i];
 }

@@ -9,7 +9,7 @@
 #include "shared/rc_sh_device.h"
 
 __kernel void rc_sh_rotate(const int count, __global const float* rotations, __global const float* in,
-                           __global float* out, __constant const float* J) {
+                           __global float* out, __constant const int* rowStart, __constant const RcSparseEntry* J) {
   const int b = get_global_id(0);
   if (b >= count) return;
   float R[9];
@@ -17,7 +17,7 @@ __kernel void rc_sh_rotate(const int count, __global const float* rotations, __g
   float v[3 * RC_N2];
   __global const float* src = in + (size_t)b * 3 * RC_N2;
   for (int i = 0; i < 3 * RC_N2; ++i) v[i] = src[i];
-  rc_rotate3(v, R, J);
+  rc_rotate3(v, R, rowStart, J);
   __global float* dst = out + (size_t)b * 3 * RC_N2;
   for (int i = 0; i < 3 * RC_N2; ++i) dst[i] = v[i];
 }

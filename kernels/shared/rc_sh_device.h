@@ -34,20 +34,21 @@ inline void rc_zrot3(float* v, float c1, float s1) {
   rc_zrot(v + 2 * RC_N2, c1, s1);
 }
 
-/* v (three channels) ← J·v (transpose = 0) or Jᵀ·v (transpose = 1), band by band, where J holds
- * the band blocks of the SH rotation by +90° about x (host: rotation_tables.cpp). Band 0 is 1. */
-inline void rc_apply_x90(float* v, __constant const float* J, int transpose) {
+/* v (three channels) ← J·v, or Jᵀ·v with rowStart offset by RC_N2, band by band: J holds the band
+ * blocks of the SH rotation by +90° about x without their structural zeros (host:
+ * rotation_tables.cpp, RcSparseEntry). Band 0 is 1. */
+inline void rc_apply_x90(float* v, __constant const int* rowStart, __constant const RcSparseEntry* J) {
   float t0[2 * RC_ORDER - 1], t1[2 * RC_ORDER - 1], t2[2 * RC_ORDER - 1];
   for (int l = 1; l < RC_ORDER; ++l) {
-    const int w = 2 * l + 1, base = l * (4 * l * l - 1) / 3, first = l * l;
-    const int rs = transpose ? 1 : w, cs = transpose ? w : 1; /* row / column strides into J */
+    const int w = 2 * l + 1, first = l * l;
     for (int i = 0; i < w; ++i) {
       float s0 = 0.0f, s1 = 0.0f, s2 = 0.0f;
-      for (int j = 0; j < w; ++j) {
-        const float jv = J[base + i * rs + j * cs];
-        s0 = fma(jv, v[first + j], s0);
-        s1 = fma(jv, v[RC_N2 + first + j], s1);
-        s2 = fma(jv, v[2 * RC_N2 + first + j], s2);
+      const int e1 = rowStart[first + i + 1];
+      for (int e = rowStart[first + i]; e < e1; ++e) {
+        const RcSparseEntry en = J[e];
+        s0 = fma(en.value, v[en.column], s0);
+        s1 = fma(en.value, v[RC_N2 + en.column], s1);
+        s2 = fma(en.value, v[2 * RC_N2 + en.column], s2);
       }
       t0[i] = s0;
       t1[i] = s1;
@@ -76,7 +77,7 @@ inline float2 rc_unit_angle(float x, float y) {
  *   R11−R00 = (1−cos β)·cos(α−γ),  −(R10+R01) = (1−cos β)·sin(α−γ)
  * so γ is derived from α and the well-conditioned sum/difference; an error in α then only
  * moves the result by O(error·sin β). Fast path: z-only rotations (incl. identity), one Dz. */
-inline void rc_rotate3(float* v, const float* R, __constant const float* J) {
+inline void rc_rotate3(float* v, const float* R, __constant const int* rowStart, __constant const RcSparseEntry* J) {
   const float sb2 = R[2] * R[2] + R[5] * R[5];
   if (sb2 <= 1e-14f && R[8] > 0.0f) { /* R = Rz(σ) up to < 1e-7 rad of tilt */
     const float2 a = rc_unit_angle(R[0] + R[4], R[3] - R[1]);
@@ -95,9 +96,9 @@ inline void rc_rotate3(float* v, const float* R, __constant const float* J) {
     gamma = (float2)(alpha.x * dif.x + alpha.y * dif.y, alpha.y * dif.x - alpha.x * dif.y);
   }
   rc_zrot3(v, gamma.x, gamma.y);
-  rc_apply_x90(v, J, 0);
+  rc_apply_x90(v, rowStart, J);
   rc_zrot3(v, beta.x, beta.y);
-  rc_apply_x90(v, J, 1);
+  rc_apply_x90(v, rowStart + RC_N2, J);
   rc_zrot3(v, alpha.x, alpha.y);
 }
 
