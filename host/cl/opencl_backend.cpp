@@ -36,6 +36,8 @@ void checkSize(const char* fn, const char* array, size_t actual, long long expec
 
 size_t roundUp(size_t x, size_t m) { return (x + m - 1) / m * m; }
 
+constexpr size_t kRotatePacksPerGroup = 4;
+
 }  // namespace
 
 struct OpenClBackend::OrderState {
@@ -359,7 +361,8 @@ void OpenClBackend::rotate(const RotateBatch& b, std::vector<float>& out) {
       cl::Buffer in = call.input(b.coeffs.data() + 3 * n2 * b0, 3 * n2 * cnt);
       cl::Buffer o = call.output(out.data() + 3 * n2 * b0, 3 * n2 * cnt);
       st.rotate.args(static_cast<cl_int>(cnt), R, in, o, st.x90Rows, st.x90Entries);
-      call.launch(st.rotate, cnt);
+      // One work-item per pack of vectorWidth items; small groups: each item holds 3·n² vectors.
+      call.launch(st.rotate, (cnt + tuning_.vectorWidth - 1) / tuning_.vectorWidth, 1, kRotatePacksPerGroup);
       call.readBack(o, out.data() + 3 * n2 * b0, 3 * n2 * cnt);
     }
   }
