@@ -14,8 +14,6 @@
 #include "shared/rc_sh_device.h"
 
 #define RC_NP (((RC_N2 + RC_VEC - 1) / RC_VEC) * RC_VEC) /* padded row length of Y and C */
-#define rc_vload RC_CAT(vload, RC_VEC)
-#define rc_vstore RC_CAT(vstore, RC_VEC)
 #define RC_TWO_PI 6.283185307179586f
 
 /* Direction of pattern cell s (phi0 = 0): cos θ = 1 − (j+ξ)/M, φ = 2π(k+ζ)/N. */

@@ -17,6 +17,21 @@
 #define RC_CAT(a, b) RC_CAT2(a, b)
 #define rc_vec RC_CAT(float, RC_VEC)
 #define rc_vec_int RC_CAT(int, RC_VEC)
+#define rc_vload RC_CAT(vload, RC_VEC)
+#define rc_vstore RC_CAT(vstore, RC_VEC)
+
+/* Sum of the lanes of an rc_vec. */
+inline float rc_vec_sum(rc_vec v) {
+#if RC_VEC == 16
+  const float8 h8 = v.lo + v.hi;
+  const float4 h = h8.lo + h8.hi;
+#elif RC_VEC == 8
+  const float4 h = v.lo + v.hi;
+#else
+  const float4 h = v;
+#endif
+  return (h.x + h.y) + (h.z + h.w);
+}
 
 /* The SH rotation, written once for an element type T and instantiated twice below (OpenCL C has
  * no templates): T = float rotates one item (interpolate), T = rc_vec rotates RC_VEC items side by
