@@ -1,6 +1,7 @@
 // rcache-bench-kernels: items/s and GFLOP/s of each kernel family on the OpenCL device, with the
-// scalar reference backend (multi-threaded, same machine, same run) in the same row, and the
-// fraction of the machine's float peak. One JSON line per family and order on stdout.
+// scalar reference backend (multi-threaded, same machine, same run) in the same row, their ratio
+// ("speedup"), and the fraction of the machine's float peak. One JSON line per family and order on
+// stdout; at the end, a table of the ratios side by side (family × order) on stderr.
 //
 //   rcache-bench-kernels [--quick] [--device SPEC] [--orders 5,10] [--cores N] [--peak-gfma-per-core G]
 //
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "cl/kernel_cases.h"
+#include "cl/rotation_tables.h"
 #include "cl/sh_backend.h"
 #include "core/error.h"
 
@@ -42,14 +44,13 @@ double timePerCall(const std::function<void()>& run, double minSeconds) {
   return elapsed / calls;
 }
 
-int bandSquares(int order) {  // Σ_l (2l+1)²
-  int s = 0;
-  for (int l = 0; l < order; ++l) s += (2 * l + 1) * (2 * l + 1);
-  return s;
-}
-// FMAs of one RGB zxzxz rotation: two band-matrix products + three z-rotations (2 per m ≠ 0
+// FMAs of one RGB zxzxz rotation: two products with the x-90° band blocks (their nonzeros only:
+// the structural zeros are no work the algorithm must do) + three z-rotations (2 per m ≠ 0
 // coefficient), three channels.
-double rotateFmas(int order) { return 3.0 * (2.0 * bandSquares(order) + 3.0 * 2.0 * (order * order - order)); }
+double rotateFmas(int order) {
+  const double x90 = static_cast<double>(rc::cl::xRotation90Sparse(order).entries.size()) / 2.0 - 1.0;  // J and Jᵀ; band 0 is 1
+  return 3.0 * (2.0 * x90 + 3.0 * 2.0 * (order * order - order));
+}
 
 struct Row {
   std::string family;
@@ -62,9 +63,26 @@ void print(const Row& r, const std::string& device, double peakGflops) {
   const double gflops = 2.0 * r.fmasPerItem * ips * 1e-9;
   std::printf(
       "{\"family\": \"%s\", \"order\": %d, \"device\": \"%s\", \"items_per_s\": %.6g, \"gflops\": %.4g, "
-      "\"ref_items_per_s\": %.6g, \"peak_fraction\": %.4f}\n",
-      r.family.c_str(), r.order, device.c_str(), ips, gflops, ref, gflops / peakGflops);
+      "\"ref_items_per_s\": %.6g, \"speedup\": %.3f, \"peak_fraction\": %.4f}\n",
+      r.family.c_str(), r.order, device.c_str(), ips, gflops, ref, ips / ref, gflops / peakGflops);
   std::fflush(stdout);
+}
+
+// Kernel / reference throughput of every family (rows) at every order (columns).
+void printSpeedups(const std::vector<Row>& rows, const std::vector<int>& orders) {
+  std::fprintf(stderr, "speedup over the scalar reference (same run)\n%-18s", "family");
+  for (int order : orders) std::fprintf(stderr, " %8s", ("n=" + std::to_string(order)).c_str());
+  std::fprintf(stderr, "\n");
+  std::vector<std::string> families;
+  for (const Row& r : rows)
+    if (std::find(families.begin(), families.end(), r.family) == families.end()) families.push_back(r.family);
+  for (const std::string& f : families) {
+    std::fprintf(stderr, "%-18s", f.c_str());
+    for (int order : orders)
+      for (const Row& r : rows)
+        if (r.family == f && r.order == order) std::fprintf(stderr, " %8.2f", r.refSeconds / r.kernelSeconds);
+    std::fprintf(stderr, "\n");
+  }
 }
 
 }  // namespace
@@ -102,6 +120,11 @@ int main(int argc, char** argv) {
     const std::string device = dev->deviceName();
     const double peakGflops = 2.0 * gfmaPerCore * cores;
     const double minT = quick ? 0.25 : 1.0;
+    std::vector<Row> rows;
+    auto report = [&](const Row& r) {
+      print(r, device, peakGflops);
+      rows.push_back(r);
+    };
     std::fprintf(stderr, "device: %s; reference: %s; peak %.0f GFLOP/s (%d cores x %.0f GFMA/s)\n", device.c_str(),
                  ref->deviceName().c_str(), peakGflops, cores, gfmaPerCore);
     for (int order : orders) {
@@ -118,7 +141,7 @@ int main(int argc, char** argv) {
         rb.radiance.resize(3ull * S * rb.records);
         rb.distance.resize(1ull * S * rb.records);
         r.refSeconds = timePerCall([&] { ref->project(rb, out); }, minT) * B / rb.records;
-        print(r, device, peakGflops);
+        report(r);
       }
       {  // projection alone (3 GEMM rows instead of 9): shows what the gradients cost
         const int M = 32, N = 128, S = M * N, B = quick ? 32 : 64;
@@ -132,7 +155,7 @@ int main(int argc, char** argv) {
         rb.radiance.resize(3ull * S * rb.records);
         rb.distance.resize(1ull * S * rb.records);
         r.refSeconds = timePerCall([&] { ref->project(rb, out); }, minT) * B / rb.records;
-        print(r, device, peakGflops);
+        report(r);
       }
       {
         const int count = 32768;
@@ -141,7 +164,7 @@ int main(int argc, char** argv) {
         Row r{"sh_rotate", order, double(count), 0, 0, rotateFmas(order)};
         r.kernelSeconds = timePerCall([&] { dev->rotate(b, out); }, minT);
         r.refSeconds = timePerCall([&] { ref->rotate(b, out); }, minT);
-        print(r, device, peakGflops);
+        report(r);
       }
       {  // world-frame mode (the renderer's default): K contributions adjusted + summed, one rotation
         const int points = 8192, records = 512;
@@ -151,7 +174,7 @@ int main(int argc, char** argv) {
         Row r{"interpolate", order, double(points), 0, 0, K * 3.0 * 3.0 * n2 + rotateFmas(order)};
         r.kernelSeconds = timePerCall([&] { dev->interpolate(b, out); }, minT);
         r.refSeconds = timePerCall([&] { ref->interpolate(b, out); }, minT);
-        print(r, device, peakGflops);
+        report(r);
       }
       {  // three materials, random ω_o; per coefficient and channel: lerp (1 FMA) + P/Q (2 FMA)
         const int points = 32768;
@@ -160,9 +183,10 @@ int main(int argc, char** argv) {
         Row r{"brdf_dot", order, double(points), 0, 0, 3.0 * 3.0 * n2};
         r.kernelSeconds = timePerCall([&] { dev->brdfDot(b, out); }, minT);
         r.refSeconds = timePerCall([&] { ref->brdfDot(b, out); }, minT);
-        print(r, device, peakGflops);
+        report(r);
       }
     }
+    printSpeedups(rows, orders);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "rcache-bench-kernels: %s\n", e.what());
     return 1;
