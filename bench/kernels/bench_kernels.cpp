@@ -9,7 +9,7 @@
 // emitted), counted per item below; peak = G GFMA/s per core (default 55: 16-wide AVX-512 FMA ×
 // ~2 pipes × ~1.7 GHz sustained — the figure given for this machine) × cores × 2 flops.
 // Throughput is host-observed wall time of a backend call, transfers included, as the renderer
-// sees it.
+// sees it: the fastest of calls alternating between kernel and reference (timeAlternating).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -29,26 +29,41 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Calls `run` repeatedly for at least `minSeconds` (after one warm-up call) and returns the
-// best per-call time of the timed calls' average over groups (robust to a noisy neighbour).
-double timePerCall(const std::function<void()>& run, double minSeconds) {
-  run();  // warm-up: program build, basis matrix, first-touch allocations
-  int calls = 0;
-  const auto t0 = Clock::now();
-  double elapsed = 0;
-  do {
+// Seconds per call of the kernel and of the reference, taken from alternating calls (kernel,
+// reference, kernel, ...) for at least `minSeconds` each and at least 5 rounds, after one warm-up
+// call of each (program build, basis matrix, first-touch allocations). Each is the fastest of its
+// calls: on a machine shared with other jobs the fastest call is the one least disturbed, and
+// alternating exposes both sides to the same neighbours, so their ratio stays fair.
+struct CallTimes {
+  double kernel, reference;
+};
+CallTimes timeAlternating(const std::function<void()>& kernel, const std::function<void()>& reference,
+                          double minSeconds) {
+  kernel();
+  reference();
+  auto seconds = [](const std::function<void()>& run) {
+    const auto t0 = Clock::now();
     run();
-    ++calls;
-    elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
-  } while (elapsed < minSeconds);
-  return elapsed / calls;
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+  };
+  CallTimes best{1e300, 1e300};
+  double kernelTotal = 0, referenceTotal = 0;
+  for (int round = 0; round < 5 || kernelTotal < minSeconds || referenceTotal < minSeconds; ++round) {
+    const double k = seconds(kernel), r = seconds(reference);
+    best.kernel = std::min(best.kernel, k);
+    best.reference = std::min(best.reference, r);
+    kernelTotal += k;
+    referenceTotal += r;
+  }
+  return best;
 }
 
 // FMAs of one RGB zxzxz rotation: two products with the x-90° band blocks (their nonzeros only:
 // the structural zeros are no work the algorithm must do) + three z-rotations (2 per m ≠ 0
 // coefficient), three channels.
 double rotateFmas(int order) {
-  const double x90 = static_cast<double>(rc::cl::xRotation90Sparse(order).entries.size()) / 2.0 - 1.0;  // J and Jᵀ; band 0 is 1
+  const std::vector<float>& J = rc::cl::xRotation90Table(order);
+  const double x90 = static_cast<double>(std::count_if(J.begin(), J.end(), [](float v) { return v != 0.0f; })) - 1.0;  // band 0 is 1
   return 3.0 * (2.0 * x90 + 3.0 * 2.0 * (order * order - order));
 }
 
@@ -83,6 +98,76 @@ void printSpeedups(const std::vector<Row>& rows, const std::vector<int>& orders)
         if (r.family == f && r.order == order) std::fprintf(stderr, " %8.2f", r.refSeconds / r.kernelSeconds);
     std::fprintf(stderr, "\n");
   }
+}
+
+struct Bench {
+  rc::ShBackend& dev;
+  rc::ShBackend& ref;
+  bool quick;
+  double minSeconds;
+};
+
+// Projection of 4096-ray records (M = 32, N = 128), with the gradients (9 GEMM rows) or without
+// (3 rows: shows what the gradients cost).
+Row benchProject(const Bench& bench, int order, bool gradients) {
+  const int M = 32, N = 128, S = M * N, B = bench.quick ? 32 : 64;
+  rc::ProjectBatch b = rc::cases::makeProjectBatch(order, M, N, B, 1u, gradients, false);
+  rc::ProjectResult out;
+  Row r{gradients ? "sh_project+grad" : "sh_project", order, double(B), 0, 0, (gradients ? 9.0 : 3.0) * S * order * order};
+  rc::ProjectBatch rb = b;
+  rb.records = bench.quick ? 4 : 8;  // the reference is slow: time fewer records
+  rb.phi0.resize(rb.records);
+  rb.radiance.resize(3ull * S * rb.records);
+  rb.distance.resize(1ull * S * rb.records);
+  rc::ProjectResult refOut;
+  const CallTimes t = timeAlternating([&] { bench.dev.project(b, out); }, [&] { bench.ref.project(rb, refOut); },
+                                      bench.minSeconds);
+  r.kernelSeconds = t.kernel;
+  r.refSeconds = t.reference * B / rb.records;
+  return r;
+}
+
+Row benchRotate(const Bench& bench, int order) {
+  const int count = 32768;
+  rc::RotateBatch b = rc::cases::makeRotateBatch(order, count, 2u, false);
+  std::vector<float> out;
+  Row r{"sh_rotate", order, double(count), 0, 0, rotateFmas(order)};
+  std::vector<float> refOut;
+  const CallTimes t =
+      timeAlternating([&] { bench.dev.rotate(b, out); }, [&] { bench.ref.rotate(b, refOut); }, bench.minSeconds);
+  r.kernelSeconds = t.kernel;
+  r.refSeconds = t.reference;
+  return r;
+}
+
+// World-frame mode (the renderer's default): K contributions adjusted + summed, one rotation.
+Row benchInterpolate(const Bench& bench, int order) {
+  const int points = 8192, records = 512;
+  rc::InterpolateBatch b = rc::cases::makeInterpolateBatch(order, records, points, 3u, true, true);
+  const double K = double(b.entries.size()) / points;
+  std::vector<float> out;
+  Row r{"interpolate", order, double(points), 0, 0, K * 3.0 * 3.0 * order * order + rotateFmas(order)};
+  std::vector<float> refOut;
+  const CallTimes t =
+      timeAlternating([&] { bench.dev.interpolate(b, out); }, [&] { bench.ref.interpolate(b, refOut); }, bench.minSeconds);
+  r.kernelSeconds = t.kernel;
+  r.refSeconds = t.reference;
+  return r;
+}
+
+// Three materials, random ω_o. FMAs per coefficient and channel of the folded form (the fewest):
+// lerp (1) + the two partial sums P_m, Q_m (2).
+Row benchBrdfDot(const Bench& bench, int order) {
+  const int points = 32768;
+  rc::BrdfDotBatch b = rc::cases::makeBrdfDotBatch(order, points, 4u);
+  std::vector<float> out;
+  Row r{"brdf_dot", order, double(points), 0, 0, 3.0 * 3.0 * order * order};
+  std::vector<float> refOut;
+  const CallTimes t =
+      timeAlternating([&] { bench.dev.brdfDot(b, out); }, [&] { bench.ref.brdfDot(b, refOut); }, bench.minSeconds);
+  r.kernelSeconds = t.kernel;
+  r.refSeconds = t.reference;
+  return r;
 }
 
 }  // namespace
@@ -127,64 +212,13 @@ int main(int argc, char** argv) {
     };
     std::fprintf(stderr, "device: %s; reference: %s; peak %.0f GFLOP/s (%d cores x %.0f GFMA/s)\n", device.c_str(),
                  ref->deviceName().c_str(), peakGflops, cores, gfmaPerCore);
+    const Bench bench{*dev, *ref, quick, minT};
     for (int order : orders) {
-      const int n2 = order * order;
-      {  // projection + gradients of 4096-ray records (M = 32, N = 128)
-        const int M = 32, N = 128, S = M * N, B = quick ? 32 : 64;
-        ProjectBatch b = cases::makeProjectBatch(order, M, N, B, 1u, true, false);
-        ProjectResult out;
-        Row r{"sh_project+grad", order, double(B), 0, 0, 9.0 * S * n2};  // GEMM: 9 rows × S × n²
-        r.kernelSeconds = timePerCall([&] { dev->project(b, out); }, minT);
-        ProjectBatch rb = b;
-        rb.records = quick ? 4 : 8;  // the reference is slow: time fewer records
-        rb.phi0.resize(rb.records);
-        rb.radiance.resize(3ull * S * rb.records);
-        rb.distance.resize(1ull * S * rb.records);
-        r.refSeconds = timePerCall([&] { ref->project(rb, out); }, minT) * B / rb.records;
-        report(r);
-      }
-      {  // projection alone (3 GEMM rows instead of 9): shows what the gradients cost
-        const int M = 32, N = 128, S = M * N, B = quick ? 32 : 64;
-        ProjectBatch b = cases::makeProjectBatch(order, M, N, B, 1u, false, false);
-        ProjectResult out;
-        Row r{"sh_project", order, double(B), 0, 0, 3.0 * S * n2};
-        r.kernelSeconds = timePerCall([&] { dev->project(b, out); }, minT);
-        ProjectBatch rb = b;
-        rb.records = quick ? 4 : 8;
-        rb.phi0.resize(rb.records);
-        rb.radiance.resize(3ull * S * rb.records);
-        rb.distance.resize(1ull * S * rb.records);
-        r.refSeconds = timePerCall([&] { ref->project(rb, out); }, minT) * B / rb.records;
-        report(r);
-      }
-      {
-        const int count = 32768;
-        RotateBatch b = cases::makeRotateBatch(order, count, 2u, false);
-        std::vector<float> out;
-        Row r{"sh_rotate", order, double(count), 0, 0, rotateFmas(order)};
-        r.kernelSeconds = timePerCall([&] { dev->rotate(b, out); }, minT);
-        r.refSeconds = timePerCall([&] { ref->rotate(b, out); }, minT);
-        report(r);
-      }
-      {  // world-frame mode (the renderer's default): K contributions adjusted + summed, one rotation
-        const int points = 8192, records = 512;
-        InterpolateBatch b = cases::makeInterpolateBatch(order, records, points, 3u, true, true);
-        const double K = double(b.entries.size()) / points;
-        std::vector<float> out;
-        Row r{"interpolate", order, double(points), 0, 0, K * 3.0 * 3.0 * n2 + rotateFmas(order)};
-        r.kernelSeconds = timePerCall([&] { dev->interpolate(b, out); }, minT);
-        r.refSeconds = timePerCall([&] { ref->interpolate(b, out); }, minT);
-        report(r);
-      }
-      {  // three materials, random ω_o; per coefficient and channel: lerp (1 FMA) + P/Q (2 FMA)
-        const int points = 32768;
-        BrdfDotBatch b = cases::makeBrdfDotBatch(order, points, 4u);
-        std::vector<float> out;
-        Row r{"brdf_dot", order, double(points), 0, 0, 3.0 * 3.0 * n2};
-        r.kernelSeconds = timePerCall([&] { dev->brdfDot(b, out); }, minT);
-        r.refSeconds = timePerCall([&] { ref->brdfDot(b, out); }, minT);
-        report(r);
-      }
+      report(benchProject(bench, order, true));
+      report(benchProject(bench, order, false));
+      report(benchRotate(bench, order));
+      report(benchInterpolate(bench, order));
+      report(benchBrdfDot(bench, order));
     }
     printSpeedups(rows, orders);
   } catch (const std::exception& e) {

@@ -36,13 +36,14 @@ void checkSize(const char* fn, const char* array, size_t actual, long long expec
 
 size_t roundUp(size_t x, size_t m) { return (x + m - 1) / m * m; }
 
-constexpr size_t kRotatePacksPerGroup = 4;
+// Work-group size of the kernels that hold RC_VEC items per work-item (3·n² vectors each).
+constexpr size_t kPacksPerGroup = 4;
 
 }  // namespace
 
 struct OpenClBackend::OrderState {
   int order = 0;
-  cl::Kernel basis, prep, gradPrep, gemm3, gemm9, finish, rotate, interp, brdf;
+  cl::Kernel basis, prep, gradPrep, gemm3, gemm9, finish, rotate, interpWorld, interpRecord, brdf;
   cl::Buffer x90Rows, x90Entries;  // sparse x-90° band blocks, J then Jᵀ (cl/rotation_tables.h)
   // Basis matrix cache: the renderer reuses one pattern across batches.
   int basisM = 0, basisN = 0;
@@ -85,7 +86,8 @@ OpenClBackend::OrderState& OpenClBackend::state(int order) {
   st->gemm9 = cl::Kernel(prog, "rc_project_gemm9");
   st->finish = cl::Kernel(prog, "rc_project_finish");
   st->rotate = cl::Kernel(prog, "rc_sh_rotate");
-  st->interp = cl::Kernel(prog, "rc_interpolate");
+  st->interpWorld = cl::Kernel(prog, "rc_interpolate_world");
+  st->interpRecord = cl::Kernel(prog, "rc_interpolate_record");
   st->brdf = cl::Kernel(prog, "rc_brdf_dot");
   const cl::SparseRotation90& x90 = cl::xRotation90Sparse(order);
   st->x90Rows = cl::Buffer(ctx_->context(), CL_MEM_READ_ONLY, x90.rowStart.size() * sizeof(rc_int), x90.rowStart.data());
@@ -361,8 +363,7 @@ void OpenClBackend::rotate(const RotateBatch& b, std::vector<float>& out) {
       cl::Buffer in = call.input(b.coeffs.data() + 3 * n2 * b0, 3 * n2 * cnt);
       cl::Buffer o = call.output(out.data() + 3 * n2 * b0, 3 * n2 * cnt);
       st.rotate.args(static_cast<cl_int>(cnt), R, in, o, st.x90Rows, st.x90Entries);
-      // One work-item per pack of vectorWidth items; small groups: each item holds 3·n² vectors.
-      call.launch(st.rotate, (cnt + tuning_.vectorWidth - 1) / tuning_.vectorWidth, 1, kRotatePacksPerGroup);
+      call.launch(st.rotate, packs(cnt), 1, kPacksPerGroup);
       call.readBack(o, out.data() + 3 * n2 * b0, 3 * n2 * cnt);
     }
   }
@@ -396,9 +397,14 @@ void OpenClBackend::interpolate(const InterpolateBatch& b, std::vector<float>& o
       cl::Buffer ob = call.input(offs.data(), offs.size());
       cl::Buffer eb = e1 > e0 ? call.input(b.entries.data() + e0, e1 - e0) : call.unused();
       cl::Buffer o = call.output(out.data() + 3 * n2 * p0, 3 * n2 * cnt);
-      st.interp.args(static_cast<cl_int>(cnt), static_cast<cl_int>(b.worldFrame ? 1 : 0),
-                     static_cast<cl_int>(b.gradients ? 1 : 0), lam, gT, gB, rf, pf, ob, eb, st.x90Rows, st.x90Entries, o);
-      call.launch(st.interp, cnt);
+      const cl_int points = static_cast<cl_int>(cnt), gradients = b.gradients ? 1 : 0;
+      if (b.worldFrame) {
+        st.interpWorld.args(points, gradients, lam, gT, gB, pf, ob, eb, st.x90Rows, st.x90Entries, o);
+        call.launch(st.interpWorld, packs(cnt), 1, kPacksPerGroup);
+      } else {
+        st.interpRecord.args(points, gradients, lam, gT, gB, rf, pf, ob, eb, st.x90Rows, st.x90Entries, o);
+        call.launch(st.interpRecord, cnt);
+      }
       call.readBack(o, out.data() + 3 * n2 * p0, 3 * n2 * cnt);
     }
   }

@@ -39,6 +39,8 @@ class OpenClBackend final : public ShBackend {
   class Call;
   OrderState& state(int order);
   void ensureBasis(Call& call, const ProjectBatch& batch);
+  // Work-items of a kernel that takes vectorWidth items per work-item, one per SIMD lane.
+  size_t packs(long long items) const { return static_cast<size_t>((items + tuning_.vectorWidth - 1) / tuning_.vectorWidth); }
   void projectChunk(Call& call, const ProjectBatch& batch, long long first, long long count, ProjectResult& out);
 
   std::shared_ptr<cl::Context> ctx_;
