@@ -127,47 +127,37 @@ Row benchProject(const Bench& bench, int order, bool gradients) {
   return r;
 }
 
+// One row for a family whose backend call is `call` (batch in, float vector out).
+template <class Batch>
+Row benchCall(const Bench& bench, const char* family, int order, double items, double fmasPerItem, const Batch& b,
+              void (rc::ShBackend::*call)(const Batch&, std::vector<float>&)) {
+  std::vector<float> out, refOut;
+  const CallTimes t =
+      timeAlternating([&] { (bench.dev.*call)(b, out); }, [&] { (bench.ref.*call)(b, refOut); }, bench.minSeconds);
+  return Row{family, order, items, t.kernel, t.reference, fmasPerItem};
+}
+
 Row benchRotate(const Bench& bench, int order) {
   const int count = 32768;
-  rc::RotateBatch b = rc::cases::makeRotateBatch(order, count, 2u, false);
-  std::vector<float> out;
-  Row r{"sh_rotate", order, double(count), 0, 0, rotateFmas(order)};
-  std::vector<float> refOut;
-  const CallTimes t =
-      timeAlternating([&] { bench.dev.rotate(b, out); }, [&] { bench.ref.rotate(b, refOut); }, bench.minSeconds);
-  r.kernelSeconds = t.kernel;
-  r.refSeconds = t.reference;
-  return r;
+  const rc::RotateBatch b = rc::cases::makeRotateBatch(order, count, 2u, false);
+  return benchCall(bench, "sh_rotate", order, count, rotateFmas(order), b, &rc::ShBackend::rotate);
 }
 
 // World-frame mode (the renderer's default): K contributions adjusted + summed, one rotation.
 Row benchInterpolate(const Bench& bench, int order) {
   const int points = 8192, records = 512;
-  rc::InterpolateBatch b = rc::cases::makeInterpolateBatch(order, records, points, 3u, true, true);
+  const rc::InterpolateBatch b = rc::cases::makeInterpolateBatch(order, records, points, 3u, true, true);
   const double K = double(b.entries.size()) / points;
-  std::vector<float> out;
-  Row r{"interpolate", order, double(points), 0, 0, K * 3.0 * 3.0 * order * order + rotateFmas(order)};
-  std::vector<float> refOut;
-  const CallTimes t =
-      timeAlternating([&] { bench.dev.interpolate(b, out); }, [&] { bench.ref.interpolate(b, refOut); }, bench.minSeconds);
-  r.kernelSeconds = t.kernel;
-  r.refSeconds = t.reference;
-  return r;
+  return benchCall(bench, "interpolate", order, points, K * 3.0 * 3.0 * order * order + rotateFmas(order), b,
+                   &rc::ShBackend::interpolate);
 }
 
 // Three materials, random ω_o. FMAs per coefficient and channel of the folded form (the fewest):
-// lerp (1) + the two partial sums P_m, Q_m (2).
-Row benchBrdfDot(const Bench& bench, int order) {
-  const int points = 32768;
-  rc::BrdfDotBatch b = rc::cases::makeBrdfDotBatch(order, points, 4u);
-  std::vector<float> out;
-  Row r{"brdf_dot", order, double(points), 0, 0, 3.0 * 3.0 * order * order};
-  std::vector<float> refOut;
-  const CallTimes t =
-      timeAlternating([&] { bench.dev.brdfDot(b, out); }, [&] { bench.ref.brdfDot(b, refOut); }, bench.minSeconds);
-  r.kernelSeconds = t.kernel;
-  r.refSeconds = t.reference;
-  return r;
+// lerp (1) + the two partial sums P_m, Q_m (2). 32768 points stream their Λ (3n² floats each) from
+// memory; "brdf_dot_2k", 2048 points, keeps them in the caches and shows the arithmetic side.
+Row benchBrdfDot(const Bench& bench, int order, int points, const char* family) {
+  const rc::BrdfDotBatch b = rc::cases::makeBrdfDotBatch(order, points, 4u);
+  return benchCall(bench, family, order, points, 3.0 * 3.0 * order * order, b, &rc::ShBackend::brdfDot);
 }
 
 }  // namespace
@@ -218,7 +208,8 @@ int main(int argc, char** argv) {
       report(benchProject(bench, order, false));
       report(benchRotate(bench, order));
       report(benchInterpolate(bench, order));
-      report(benchBrdfDot(bench, order));
+      report(benchBrdfDot(bench, order, 32768, "brdf_dot"));
+      report(benchBrdfDot(bench, order, 2048, "brdf_dot_2k"));
     }
     printSpeedups(rows, orders);
   } catch (const std::exception& e) {
