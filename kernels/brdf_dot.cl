@@ -1,8 +1,10 @@
 /* brdf_dot: L_o,c(p) = Σ_i Λ_c,i(p)·F_c,i(ω_o) (host/sh/batches.h BrdfDotBatch). One work-item
- * per point. Isotropic 1-D tables: linear lookup in x = tan(θ_o/2) into a private vector, which is
- * turned by φ_o about z (cos mφ by recurrence: no trigonometric calls) and dotted with Λ. The
- * lookup and the dot run on contiguous coefficients, RC_VEC per vector operation; only the turn is
- * scalar. 2-D tables: bilinear lookup fused into the dot, also RC_VEC coefficients at a time. */
+ * per point. Isotropic 1-D tables: linear lookup in x = tan(θ_o/2), then the z-rotation by φ_o is
+ * folded into the dot product: per m > 0 only two partial sums P_m, Q_m are formed, and
+ * L = Σ_l Λ_l0 G_l0 + Σ_m (cos mφ·P_m + sin mφ·Q_m), so the trigonometry costs O(n), not O(n²)
+ * (measured faster than looking up a contiguous vector, turning it and dotting it with vector
+ * operations, bench/RESULTS.md). 2-D tables: the bilinear lookup fused into the dot, RC_VEC
+ * contiguous coefficients per vector operation. */
 #include "shared/rc_types.h"
 #ifndef RC_ORDER
 #define RC_ORDER 10
@@ -36,24 +38,31 @@ __kernel void rc_brdf_dot(const int points, __global const float* lambda, __glob
       __global const float* F0 = tableData + tab.offset + (size_t)i0 * 3 * nt2;
       __global const float* F1 = T > 1 ? F0 + 3 * nt2 : F0;
       const float2 ph = rc_unit_angle(x, y);
-      const int nn = n * n;
       for (int c = 0; c < 3; ++c) {
         __global const float* a = F0 + c * nt2;
         __global const float* b = F1 + c * nt2;
         __global const float* L = lam + c * RC_N2;
-        float g[RC_N2]; /* the looked-up vector, then turned by φ_o */
-        int i = 0;
-        for (; i + RC_VEC <= nn; i += RC_VEC) {
-          const rc_vec av = rc_vload(0, a + i);
-          rc_vstore(fma((rc_vec)(f), rc_vload(0, b + i) - av, av), 0, g + i);
+        float sum = 0.0f;
+        for (int l = 0; l < n; ++l) {
+          const float g = fma(f, b[l * (l + 1)] - a[l * (l + 1)], a[l * (l + 1)]);
+          sum = fma(L[l * (l + 1)], g, sum);
         }
-        for (; i < nn; ++i) g[i] = fma(f, b[i] - a[i], a[i]);
-        for (; i < RC_N2; ++i) g[i] = 0.0f;
-        rc_zrot(g, 1, ph.x, ph.y);
-        rc_vec acc = (rc_vec)(0.0f);
-        for (i = 0; i + RC_VEC <= nn; i += RC_VEC) acc = fma(rc_vload(0, L + i), rc_vload(0, g + i), acc);
-        float sum = rc_vec_sum(acc);
-        for (; i < nn; ++i) sum = fma(L[i], g[i], sum);
+        float cm = ph.x, sm = ph.y;
+        for (int m = 1; m < n; ++m) {
+          float P = 0.0f, Q = 0.0f;
+          for (int l = m; l < n; ++l) {
+            const int tp = l * (l + 1) + m, tn = l * (l + 1) - m;
+            const float gp = fma(f, b[tp] - a[tp], a[tp]);
+            const float gn = fma(f, b[tn] - a[tn], a[tn]);
+            const float lp = L[tp], ln = L[tn];
+            P = fma(lp, gp, fma(ln, gn, P));
+            Q = fma(ln, gp, fma(-lp, gn, Q));
+          }
+          sum = fma(cm, P, fma(sm, Q, sum));
+          const float cn = cm * ph.x - sm * ph.y;
+          sm = sm * ph.x + cm * ph.y;
+          cm = cn;
+        }
         result[c] = sum;
       }
     } else if (tab.kind == RC_TABLE_ANISOTROPIC_2D) {
