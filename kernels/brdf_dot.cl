@@ -1,7 +1,10 @@
 /* brdf_dot: L_o,c(p) = Σ_i Λ_c,i(p)·F_c,i(ω_o) (host/sh/batches.h BrdfDotBatch). One work-item
  * per point. Isotropic 1-D tables: linear lookup in x = tan(θ_o/2), then the z-rotation by φ_o is
  * folded into the dot product: per m > 0 only two partial sums P_m, Q_m are formed, and
- * L = Σ_l Λ_l0 G_l0 + Σ_m (cos mφ·P_m + sin mφ·Q_m), so the trigonometry costs O(n), not O(n²). */
+ * L = Σ_l Λ_l0 G_l0 + Σ_m (cos mφ·P_m + sin mφ·Q_m), so the trigonometry costs O(n), not O(n²)
+ * (measured faster than looking up a contiguous vector, turning it and dotting it with vector
+ * operations, bench/RESULTS.md). 2-D tables: the bilinear lookup fused into the dot, RC_VEC
+ * contiguous coefficients per vector operation. */
 #include "shared/rc_types.h"
 #ifndef RC_ORDER
 #define RC_ORDER 10
@@ -77,15 +80,23 @@ __kernel void rc_brdf_dot(const int points, __global const float* lambda, __glob
       __global const float* F10 = base + ((size_t)iy1 * S + ix) * 3 * nt2;
       __global const float* F11 = base + ((size_t)iy1 * S + ix1) * 3 * nt2;
       const float w00 = (1.0f - fx) * (1.0f - fy), w01 = fx * (1.0f - fy), w10 = (1.0f - fx) * fy, w11 = fx * fy;
+      /* Bands 0..n−1 are the contiguous indices 0..n²−1: RC_VEC of them per vector operation. */
+      const int nn = n * n;
       for (int c = 0; c < 3; ++c) {
         __global const float* L = lam + c * RC_N2;
-        float sum = 0.0f;
-        for (int l = 0; l < n; ++l)
-          for (int i = l * l; i < (l + 1) * (l + 1); ++i) {
-            const int ti = c * nt2 + i;
-            const float g = w00 * F00[ti] + w01 * F01[ti] + w10 * F10[ti] + w11 * F11[ti];
-            sum = fma(L[i], g, sum);
-          }
+        __global const float* f00 = F00 + c * nt2;
+        __global const float* f01 = F01 + c * nt2;
+        __global const float* f10 = F10 + c * nt2;
+        __global const float* f11 = F11 + c * nt2;
+        rc_vec acc = (rc_vec)(0.0f);
+        int i = 0;
+        for (; i + RC_VEC <= nn; i += RC_VEC) {
+          const rc_vec g = w00 * rc_vload(0, f00 + i) + w01 * rc_vload(0, f01 + i) + w10 * rc_vload(0, f10 + i) +
+                           w11 * rc_vload(0, f11 + i);
+          acc = fma(rc_vload(0, L + i), g, acc);
+        }
+        float sum = rc_vec_sum(acc);
+        for (; i < nn; ++i) sum = fma(L[i], w00 * f00[i] + w01 * f01[i] + w10 * f10[i] + w11 * f11[i], sum);
         result[c] = sum;
       }
     }

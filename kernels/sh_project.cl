@@ -11,17 +11,9 @@
 #ifndef RC_ORDER
 #define RC_ORDER 10
 #endif
-#ifndef RC_VEC /* SIMD width of one work-item's output chunk: 4, 8 or 16 */
-#define RC_VEC 8
-#endif
 #include "shared/rc_sh_device.h"
 
 #define RC_NP (((RC_N2 + RC_VEC - 1) / RC_VEC) * RC_VEC) /* padded row length of Y and C */
-#define RC_CAT2(a, b) a##b
-#define RC_CAT(a, b) RC_CAT2(a, b)
-#define rc_vec RC_CAT(float, RC_VEC)
-#define rc_vload RC_CAT(vload, RC_VEC)
-#define rc_vstore RC_CAT(vstore, RC_VEC)
 #define RC_TWO_PI 6.283185307179586f
 
 /* Direction of pattern cell s (phi0 = 0): cos θ = 1 − (j+ξ)/M, φ = 2π(k+ζ)/N. */
@@ -132,7 +124,7 @@ __kernel void rc_project_finish(const int B, const int rows, const float scale, 
   for (int i = 0; i < RC_N2; ++i) v[i] = c[i] * sc;
   float cp;
   const float sp = sincos(phi0[b], &cp);
-  rc_zrot(v, cp, sp);
+  rc_zrot(v, 1, cp, sp);
   __global float* dst = which == 0 ? lambda : which == 1 ? gradT : gradB;
   dst += ((size_t)b * 3 + channel) * RC_N2;
   for (int i = 0; i < RC_N2; ++i) dst[i] = v[i];

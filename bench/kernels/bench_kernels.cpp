@@ -1,6 +1,7 @@
 // rcache-bench-kernels: items/s and GFLOP/s of each kernel family on the OpenCL device, with the
-// scalar reference backend (multi-threaded, same machine, same run) in the same row, and the
-// fraction of the machine's float peak. One JSON line per family and order on stdout.
+// scalar reference backend (multi-threaded, same machine, same run) in the same row, their ratio
+// ("speedup"), and the fraction of the machine's float peak. One JSON line per family and order on
+// stdout; at the end, a table of the ratios side by side (family × order) on stderr.
 //
 //   rcache-bench-kernels [--quick] [--device SPEC] [--orders 5,10] [--cores N] [--peak-gfma-per-core G]
 //
@@ -8,7 +9,7 @@
 // emitted), counted per item below; peak = G GFMA/s per core (default 55: 16-wide AVX-512 FMA ×
 // ~2 pipes × ~1.7 GHz sustained — the figure given for this machine) × cores × 2 flops.
 // Throughput is host-observed wall time of a backend call, transfers included, as the renderer
-// sees it.
+// sees it: the fastest of calls alternating between kernel and reference (timeAlternating).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "cl/kernel_cases.h"
+#include "cl/rotation_tables.h"
 #include "cl/sh_backend.h"
 #include "core/error.h"
 
@@ -27,29 +29,43 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Calls `run` repeatedly for at least `minSeconds` (after one warm-up call) and returns the
-// best per-call time of the timed calls' average over groups (robust to a noisy neighbour).
-double timePerCall(const std::function<void()>& run, double minSeconds) {
-  run();  // warm-up: program build, basis matrix, first-touch allocations
-  int calls = 0;
-  const auto t0 = Clock::now();
-  double elapsed = 0;
-  do {
+// Seconds per call of the kernel and of the reference, taken from alternating calls (kernel,
+// reference, kernel, ...) for at least `minSeconds` each and at least 5 rounds, after one warm-up
+// call of each (program build, basis matrix, first-touch allocations). Each is the fastest of its
+// calls: on a machine shared with other jobs the fastest call is the one least disturbed, and
+// alternating exposes both sides to the same neighbours, so their ratio stays fair.
+struct CallTimes {
+  double kernel, reference;
+};
+CallTimes timeAlternating(const std::function<void()>& kernel, const std::function<void()>& reference,
+                          double minSeconds) {
+  kernel();
+  reference();
+  auto seconds = [](const std::function<void()>& run) {
+    const auto t0 = Clock::now();
     run();
-    ++calls;
-    elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
-  } while (elapsed < minSeconds);
-  return elapsed / calls;
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+  };
+  CallTimes best{1e300, 1e300};
+  double kernelTotal = 0, referenceTotal = 0;
+  for (int round = 0; round < 5 || kernelTotal < minSeconds || referenceTotal < minSeconds; ++round) {
+    const double k = seconds(kernel), r = seconds(reference);
+    best.kernel = std::min(best.kernel, k);
+    best.reference = std::min(best.reference, r);
+    kernelTotal += k;
+    referenceTotal += r;
+  }
+  return best;
 }
 
-int bandSquares(int order) {  // Σ_l (2l+1)²
-  int s = 0;
-  for (int l = 0; l < order; ++l) s += (2 * l + 1) * (2 * l + 1);
-  return s;
-}
-// FMAs of one RGB zxzxz rotation: two band-matrix products + three z-rotations (2 per m ≠ 0
+// FMAs of one RGB zxzxz rotation: two products with the x-90° band blocks (their nonzeros only:
+// the structural zeros are no work the algorithm must do) + three z-rotations (2 per m ≠ 0
 // coefficient), three channels.
-double rotateFmas(int order) { return 3.0 * (2.0 * bandSquares(order) + 3.0 * 2.0 * (order * order - order)); }
+double rotateFmas(int order) {
+  const std::vector<float>& J = rc::cl::xRotation90Table(order);
+  const double x90 = static_cast<double>(std::count_if(J.begin(), J.end(), [](float v) { return v != 0.0f; })) - 1.0;  // band 0 is 1
+  return 3.0 * (2.0 * x90 + 3.0 * 2.0 * (order * order - order));
+}
 
 struct Row {
   std::string family;
@@ -62,9 +78,86 @@ void print(const Row& r, const std::string& device, double peakGflops) {
   const double gflops = 2.0 * r.fmasPerItem * ips * 1e-9;
   std::printf(
       "{\"family\": \"%s\", \"order\": %d, \"device\": \"%s\", \"items_per_s\": %.6g, \"gflops\": %.4g, "
-      "\"ref_items_per_s\": %.6g, \"peak_fraction\": %.4f}\n",
-      r.family.c_str(), r.order, device.c_str(), ips, gflops, ref, gflops / peakGflops);
+      "\"ref_items_per_s\": %.6g, \"speedup\": %.3f, \"peak_fraction\": %.4f}\n",
+      r.family.c_str(), r.order, device.c_str(), ips, gflops, ref, ips / ref, gflops / peakGflops);
   std::fflush(stdout);
+}
+
+// Kernel / reference throughput of every family (rows) at every order (columns).
+void printSpeedups(const std::vector<Row>& rows, const std::vector<int>& orders) {
+  std::fprintf(stderr, "speedup over the scalar reference (same run)\n%-18s", "family");
+  for (int order : orders) std::fprintf(stderr, " %8s", ("n=" + std::to_string(order)).c_str());
+  std::fprintf(stderr, "\n");
+  std::vector<std::string> families;
+  for (const Row& r : rows)
+    if (std::find(families.begin(), families.end(), r.family) == families.end()) families.push_back(r.family);
+  for (const std::string& f : families) {
+    std::fprintf(stderr, "%-18s", f.c_str());
+    for (int order : orders)
+      for (const Row& r : rows)
+        if (r.family == f && r.order == order) std::fprintf(stderr, " %8.2f", r.refSeconds / r.kernelSeconds);
+    std::fprintf(stderr, "\n");
+  }
+}
+
+struct Bench {
+  rc::ShBackend& dev;
+  rc::ShBackend& ref;
+  bool quick;
+  double minSeconds;
+};
+
+// Projection of 4096-ray records (M = 32, N = 128), with the gradients (9 GEMM rows) or without
+// (3 rows: shows what the gradients cost).
+Row benchProject(const Bench& bench, int order, bool gradients) {
+  const int M = 32, N = 128, S = M * N, B = bench.quick ? 32 : 64;
+  rc::ProjectBatch b = rc::cases::makeProjectBatch(order, M, N, B, 1u, gradients, false);
+  rc::ProjectResult out;
+  Row r{gradients ? "sh_project+grad" : "sh_project", order, double(B), 0, 0, (gradients ? 9.0 : 3.0) * S * order * order};
+  rc::ProjectBatch rb = b;
+  rb.records = bench.quick ? 4 : 8;  // the reference is slow: time fewer records
+  rb.phi0.resize(rb.records);
+  rb.radiance.resize(3ull * S * rb.records);
+  rb.distance.resize(1ull * S * rb.records);
+  rc::ProjectResult refOut;
+  const CallTimes t = timeAlternating([&] { bench.dev.project(b, out); }, [&] { bench.ref.project(rb, refOut); },
+                                      bench.minSeconds);
+  r.kernelSeconds = t.kernel;
+  r.refSeconds = t.reference * B / rb.records;
+  return r;
+}
+
+// One row for a family whose backend call is `call` (batch in, float vector out).
+template <class Batch>
+Row benchCall(const Bench& bench, const char* family, int order, double items, double fmasPerItem, const Batch& b,
+              void (rc::ShBackend::*call)(const Batch&, std::vector<float>&)) {
+  std::vector<float> out, refOut;
+  const CallTimes t =
+      timeAlternating([&] { (bench.dev.*call)(b, out); }, [&] { (bench.ref.*call)(b, refOut); }, bench.minSeconds);
+  return Row{family, order, items, t.kernel, t.reference, fmasPerItem};
+}
+
+Row benchRotate(const Bench& bench, int order) {
+  const int count = 32768;
+  const rc::RotateBatch b = rc::cases::makeRotateBatch(order, count, 2u, false);
+  return benchCall(bench, "sh_rotate", order, count, rotateFmas(order), b, &rc::ShBackend::rotate);
+}
+
+// World-frame mode (the renderer's default): K contributions adjusted + summed, one rotation.
+Row benchInterpolate(const Bench& bench, int order) {
+  const int points = 8192, records = 512;
+  const rc::InterpolateBatch b = rc::cases::makeInterpolateBatch(order, records, points, 3u, true, true);
+  const double K = double(b.entries.size()) / points;
+  return benchCall(bench, "interpolate", order, points, K * 3.0 * 3.0 * order * order + rotateFmas(order), b,
+                   &rc::ShBackend::interpolate);
+}
+
+// Three materials, random ω_o. FMAs per coefficient and channel of the folded form (the fewest):
+// lerp (1) + the two partial sums P_m, Q_m (2). 32768 points stream their Λ (3n² floats each) from
+// memory; "brdf_dot_2k", 2048 points, keeps them in the caches and shows the arithmetic side.
+Row benchBrdfDot(const Bench& bench, int order, int points, const char* family) {
+  const rc::BrdfDotBatch b = rc::cases::makeBrdfDotBatch(order, points, 4u);
+  return benchCall(bench, family, order, points, 3.0 * 3.0 * order * order, b, &rc::ShBackend::brdfDot);
 }
 
 }  // namespace
@@ -102,67 +195,23 @@ int main(int argc, char** argv) {
     const std::string device = dev->deviceName();
     const double peakGflops = 2.0 * gfmaPerCore * cores;
     const double minT = quick ? 0.25 : 1.0;
+    std::vector<Row> rows;
+    auto report = [&](const Row& r) {
+      print(r, device, peakGflops);
+      rows.push_back(r);
+    };
     std::fprintf(stderr, "device: %s; reference: %s; peak %.0f GFLOP/s (%d cores x %.0f GFMA/s)\n", device.c_str(),
                  ref->deviceName().c_str(), peakGflops, cores, gfmaPerCore);
+    const Bench bench{*dev, *ref, quick, minT};
     for (int order : orders) {
-      const int n2 = order * order;
-      {  // projection + gradients of 4096-ray records (M = 32, N = 128)
-        const int M = 32, N = 128, S = M * N, B = quick ? 32 : 64;
-        ProjectBatch b = cases::makeProjectBatch(order, M, N, B, 1u, true, false);
-        ProjectResult out;
-        Row r{"sh_project+grad", order, double(B), 0, 0, 9.0 * S * n2};  // GEMM: 9 rows × S × n²
-        r.kernelSeconds = timePerCall([&] { dev->project(b, out); }, minT);
-        ProjectBatch rb = b;
-        rb.records = quick ? 4 : 8;  // the reference is slow: time fewer records
-        rb.phi0.resize(rb.records);
-        rb.radiance.resize(3ull * S * rb.records);
-        rb.distance.resize(1ull * S * rb.records);
-        r.refSeconds = timePerCall([&] { ref->project(rb, out); }, minT) * B / rb.records;
-        print(r, device, peakGflops);
-      }
-      {  // projection alone (3 GEMM rows instead of 9): shows what the gradients cost
-        const int M = 32, N = 128, S = M * N, B = quick ? 32 : 64;
-        ProjectBatch b = cases::makeProjectBatch(order, M, N, B, 1u, false, false);
-        ProjectResult out;
-        Row r{"sh_project", order, double(B), 0, 0, 3.0 * S * n2};
-        r.kernelSeconds = timePerCall([&] { dev->project(b, out); }, minT);
-        ProjectBatch rb = b;
-        rb.records = quick ? 4 : 8;
-        rb.phi0.resize(rb.records);
-        rb.radiance.resize(3ull * S * rb.records);
-        rb.distance.resize(1ull * S * rb.records);
-        r.refSeconds = timePerCall([&] { ref->project(rb, out); }, minT) * B / rb.records;
-        print(r, device, peakGflops);
-      }
-      {
-        const int count = 32768;
-        RotateBatch b = cases::makeRotateBatch(order, count, 2u, false);
-        std::vector<float> out;
-        Row r{"sh_rotate", order, double(count), 0, 0, rotateFmas(order)};
-        r.kernelSeconds = timePerCall([&] { dev->rotate(b, out); }, minT);
-        r.refSeconds = timePerCall([&] { ref->rotate(b, out); }, minT);
-        print(r, device, peakGflops);
-      }
-      {  // world-frame mode (the renderer's default): K contributions adjusted + summed, one rotation
-        const int points = 8192, records = 512;
-        InterpolateBatch b = cases::makeInterpolateBatch(order, records, points, 3u, true, true);
-        const double K = double(b.entries.size()) / points;
-        std::vector<float> out;
-        Row r{"interpolate", order, double(points), 0, 0, K * 3.0 * 3.0 * n2 + rotateFmas(order)};
-        r.kernelSeconds = timePerCall([&] { dev->interpolate(b, out); }, minT);
-        r.refSeconds = timePerCall([&] { ref->interpolate(b, out); }, minT);
-        print(r, device, peakGflops);
-      }
-      {  // three materials, random ω_o; per coefficient and channel: lerp (1 FMA) + P/Q (2 FMA)
-        const int points = 32768;
-        BrdfDotBatch b = cases::makeBrdfDotBatch(order, points, 4u);
-        std::vector<float> out;
-        Row r{"brdf_dot", order, double(points), 0, 0, 3.0 * 3.0 * n2};
-        r.kernelSeconds = timePerCall([&] { dev->brdfDot(b, out); }, minT);
-        r.refSeconds = timePerCall([&] { ref->brdfDot(b, out); }, minT);
-        print(r, device, peakGflops);
-      }
+      report(benchProject(bench, order, true));
+      report(benchProject(bench, order, false));
+      report(benchRotate(bench, order));
+      report(benchInterpolate(bench, order));
+      report(benchBrdfDot(bench, order, 32768, "brdf_dot"));
+      report(benchBrdfDot(bench, order, 2048, "brdf_dot_2k"));
     }
+    printSpeedups(rows, orders);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "rcache-bench-kernels: %s\n", e.what());
     return 1;

@@ -116,7 +116,12 @@ class Kernel {
     cl_mem m = b.get();
     RC_CL_CHECK(clSetKernelArg(k_, index, sizeof(cl_mem), &m));
   }
-  void localArg(cl_uint index, size_t bytes) { RC_CL_CHECK(clSetKernelArg(k_, index, bytes, nullptr)); }
+  // All arguments at once, in the kernel's parameter order.
+  template <class... Args>
+  void args(const Args&... values) {
+    cl_uint index = 0;
+    (arg(index++, values), ...);
+  }
 
  private:
   cl_kernel k_ = nullptr;

@@ -1,6 +1,6 @@
 #pragma once
 // ShBackend on one OpenCL device: kernels/*.cl built once per SH order into one program
-// (-D RC_ORDER=n -D RC_VEC=w), batches split so every buffer fits CL_DEVICE_MAX_MEM_ALLOC_SIZE.
+// (-D RC_ORDER=n -D RC_VEC=w, w from cl/device_tuning.h), batches split so every buffer fits CL_DEVICE_MAX_MEM_ALLOC_SIZE.
 #include <map>
 #include <memory>
 #include <mutex>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cl/cl_runtime.h"
+#include "cl/device_tuning.h"
 #include "cl/sh_backend.h"
 
 namespace rc {
@@ -35,13 +36,16 @@ class OpenClBackend final : public ShBackend {
 
  private:
   struct OrderState;
+  class Call;
   OrderState& state(int order);
-  void ensureBasis(OrderState& st, const ProjectBatch& batch);
+  void ensureBasis(Call& call, const ProjectBatch& batch);
+  // Work-items of a kernel that takes vectorWidth items per work-item, one per SIMD lane.
+  size_t packs(long long items) const { return static_cast<size_t>((items + tuning_.vectorWidth - 1) / tuning_.vectorWidth); }
+  void projectChunk(Call& call, const ProjectBatch& batch, long long first, long long count, ProjectResult& out);
 
   std::shared_ptr<cl::Context> ctx_;
+  cl::DeviceTuning tuning_;
   std::map<int, std::unique_ptr<OrderState>> states_;
-  int vec_ = 8;
-  int gemmLocal_ = 0;
   size_t maxBuffer_ = 0;
   std::mutex mutex_;
 };

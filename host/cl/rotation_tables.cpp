@@ -105,4 +105,27 @@ const std::vector<float>& xRotation90Table(int order) {
   return cache.emplace(order, std::move(table)).first->second;
 }
 
+const SparseRotation90& xRotation90Sparse(int order) {
+  static std::mutex mutex;
+  static std::map<int, SparseRotation90> cache;
+  const std::vector<float>& dense = xRotation90Table(order);
+  std::lock_guard<std::mutex> lock(mutex);
+  auto it = cache.find(order);
+  if (it != cache.end()) return it->second;
+  SparseRotation90 s;
+  for (int transpose = 0; transpose < 2; ++transpose)
+    for (int l = 0; l < order; ++l) {
+      const int w = 2 * l + 1, base = bandBlockOffset(l);
+      for (int r = 0; r < w; ++r) {
+        s.rowStart.push_back(static_cast<rc_int>(s.entries.size()));
+        for (int c = 0; c < w; ++c) {
+          const float v = transpose ? dense[base + c * w + r] : dense[base + r * w + c];
+          if (v != 0.0f) s.entries.push_back(RcSparseEntry{l * l + c, v});
+        }
+      }
+    }
+  s.rowStart.push_back(static_cast<rc_int>(s.entries.size()));
+  return cache.emplace(order, std::move(s)).first->second;
+}
+
 }  // namespace rc::cl

@@ -30,12 +30,21 @@ typedef struct RcBrdfTable {
   rc_int offset;  /* first float of the table in the flat array */
 } RcBrdfTable;
 
+/* One nonzero of the x-90° SH rotation's band blocks (sh_rotate, interpolate): three quarters of
+ * those blocks are structural zeros, so the kernels walk rows in CSR form, entries
+ * rowStart[i] .. rowStart[i+1]), column = flat SH index of the coefficient it multiplies. */
+typedef struct RcSparseEntry {
+  rc_int column;
+  float value;
+} RcSparseEntry;
+
 #define RC_TABLE_ISOTROPIC_1D 0
 #define RC_TABLE_ANISOTROPIC_2D 1
 
 #ifndef __OPENCL_VERSION__
 static_assert(sizeof(RcContribution) == 16, "RcContribution layout");
 static_assert(sizeof(RcBrdfTable) == 16, "RcBrdfTable layout");
+static_assert(sizeof(RcSparseEntry) == 8, "RcSparseEntry layout");
 #endif
 
 #endif /* RC_TYPES_H */

@@ -90,29 +90,32 @@ TEST(Layout, SharedStructsMatchOnTheDevice) {
 #include "shared/rc_types.h"
 #define RC_OFF(s, f) (int)((__private char*)&s.f - (__private char*)&s)
 __kernel void rc_layout(__global int* out) {
-  RcContribution c; RcBrdfTable t;
+  RcContribution c; RcBrdfTable t; RcSparseEntry e;
   out[0] = sizeof(RcContribution); out[1] = RC_OFF(c, record); out[2] = RC_OFF(c, weight);
   out[3] = RC_OFF(c, dt); out[4] = RC_OFF(c, db);
   out[5] = sizeof(RcBrdfTable); out[6] = RC_OFF(t, kind); out[7] = RC_OFF(t, order);
   out[8] = RC_OFF(t, res); out[9] = RC_OFF(t, offset);
   out[10] = RC_TABLE_ISOTROPIC_1D; out[11] = RC_TABLE_ANISOTROPIC_2D;
+  out[12] = sizeof(RcSparseEntry); out[13] = RC_OFF(e, column); out[14] = RC_OFF(e, value);
 })", "layout.cl");
   cl_program prog = cl::buildProgram(ctx->context(), ctx->info().device, {src}, "-cl-std=CL1.2", "layout.cl");
   {
     cl::Kernel k(prog, "rc_layout");
-    cl::Buffer out(ctx->context(), CL_MEM_WRITE_ONLY, 12 * sizeof(cl_int));
+    cl::Buffer out(ctx->context(), CL_MEM_WRITE_ONLY, 15 * sizeof(cl_int));
     k.arg(0, out);
     const size_t one = 1;
     std::lock_guard<std::mutex> lock(ctx->queueMutex());
     RC_CL_CHECK(clEnqueueNDRangeKernel(ctx->queue(), k.get(), 1, nullptr, &one, &one, 0, nullptr, nullptr));
-    int dev[12];
+    int dev[15];
     RC_CL_CHECK(clEnqueueReadBuffer(ctx->queue(), out.get(), CL_TRUE, 0, sizeof dev, dev, 0, nullptr, nullptr));
-    const int host[12] = {int(sizeof(RcContribution)), int(offsetof(RcContribution, record)),
+    const int host[15] = {int(sizeof(RcContribution)), int(offsetof(RcContribution, record)),
                           int(offsetof(RcContribution, weight)), int(offsetof(RcContribution, dt)),
                           int(offsetof(RcContribution, db)), int(sizeof(RcBrdfTable)), int(offsetof(RcBrdfTable, kind)),
                           int(offsetof(RcBrdfTable, order)), int(offsetof(RcBrdfTable, res)),
-                          int(offsetof(RcBrdfTable, offset)), RC_TABLE_ISOTROPIC_1D, RC_TABLE_ANISOTROPIC_2D};
-    for (int i = 0; i < 12; ++i) EXPECT_EQ(dev[i], host[i]) << "field " << i;
+                          int(offsetof(RcBrdfTable, offset)), RC_TABLE_ISOTROPIC_1D, RC_TABLE_ANISOTROPIC_2D,
+                          int(sizeof(RcSparseEntry)), int(offsetof(RcSparseEntry, column)),
+                          int(offsetof(RcSparseEntry, value))};
+    for (int i = 0; i < 15; ++i) EXPECT_EQ(dev[i], host[i]) << "field " << i;
   }
   clReleaseProgram(prog);
 }

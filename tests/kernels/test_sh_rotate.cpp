@@ -1,4 +1,7 @@
 // sh_rotate kernel vs rc::ref::rotate.
+#include <algorithm>
+#include <cmath>
+
 #include "cl/kernel_cases.h"
 #include "kernel_test_util.h"
 #include "sh/reference.h"
@@ -28,6 +31,32 @@ TEST(RotateKernel, IdentityIsExact) {
   std::vector<float> got;
   backend->rotate(b, got);
   EXPECT_EQ(got, b.coeffs);
+}
+
+// The kernel rotates several items side by side; z-only items sharing a pack with general ones
+// take the same exact path as when they are alone (identity bit-exact, z-turns identical).
+TEST(RotateKernel, ZOnlyItemsAmongGeneralOnesAreExact) {
+  RC_KERNEL_BACKEND(backend);
+  const int order = 10, n2 = order * order, count = 37;  // several packs and a partial one
+  RotateBatch b = cases::makeRotateBatch(order, count, 9u, false);
+  const int identity = 5, zTurn = 18;
+  const float c = std::cos(0.7f), s = std::sin(0.7f);
+  const float I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, Z[9] = {c, -s, 0, s, c, 0, 0, 0, 1};
+  std::copy(I, I + 9, b.rotations.begin() + 9 * identity);
+  std::copy(Z, Z + 9, b.rotations.begin() + 9 * zTurn);
+  std::vector<float> mixed, alone;
+  backend->rotate(b, mixed);
+  RotateBatch one;
+  one.order = order;
+  one.count = 1;
+  one.rotations.assign(Z, Z + 9);
+  one.coeffs.assign(b.coeffs.begin() + 3 * n2 * zTurn, b.coeffs.begin() + 3 * n2 * (zTurn + 1));
+  backend->rotate(one, alone);
+  for (int i = 0; i < 3 * n2; ++i) {
+    EXPECT_EQ(mixed[3 * n2 * identity + i], b.coeffs[3 * n2 * identity + i]) << "identity, coefficient " << i;
+    EXPECT_EQ(mixed[3 * n2 * zTurn + i], alone[i]) << "z-turn, coefficient " << i;
+  }
+  EXPECT_NE(mixed[3 * n2 * zTurn + 5], b.coeffs[3 * n2 * zTurn + 5]);  // the z-turn did turn
 }
 
 TEST(RotateKernel, RotationThenInverseIsIdentity) {
