@@ -38,8 +38,8 @@ SCENES = ["cornell_glossy", "glossy_sweep", "aniso_sphere", "curved_glossy", "co
 QUICK_SCENES = ["cornell_glossy", "envmap_product", "corridor"]
 # Adaptive sampling (--adaptive T, --max-spp N) is offered to both methods with the same thresholds;
 # each method's curve is the best error it reaches by each time over all its settings.
-# Mitsuba's ladder is in powers of 4: its ldsampler rounds any other count up to one.
-FULL = dict(res=512, ref_spp=4096, path_spp=[4, 8, 16, 32, 64, 128, 256], mitsuba_spp=[1, 4, 16, 64, 256, 1024],
+# Mitsuba's ladder is in powers of 4 from 4: its ldsampler rounds any other count (1 too) up to one.
+FULL = dict(res=512, ref_spp=4096, path_spp=[4, 8, 16, 32, 64, 128, 256], mitsuba_spp=[4, 16, 64, 256, 1024],
             path_adaptive=[(dict(adapt=0.05), 16), (dict(adapt=0.05), 32), (dict(adapt=0.02), 32)],
             rcache=[(dict(), 4), (dict(), 8), (dict(), 16), (dict(), 32), (dict(), 64), (dict(), 128), (dict(), 256),
                     (dict(rays=256, a=0.5), 16),
@@ -52,7 +52,7 @@ FULL = dict(res=512, ref_spp=4096, path_spp=[4, 8, 16, 32, 64, 128, 256], mitsub
             variants=[("adaptive=true", {"adaptive": "true"}), ("gradients=false", {"gradients": "false"}),
                       ("frame=world", {"frame": "world"}), ("mode=tl", {"mode": "tl"})],
             variant_spp=16)
-QUICK = dict(res=96, ref_spp=1024, path_spp=[1, 4, 16, 64], mitsuba_spp=[1, 4, 16, 64, 256],
+QUICK = dict(res=96, ref_spp=1024, path_spp=[1, 4, 16, 64], mitsuba_spp=[4, 16, 64, 256],
              path_adaptive=[(dict(adapt=0.05), 16)],
              rcache=[(dict(), 2), (dict(), 8), (dict(), 32), (dict(rays=256, a=0.5), 8), (dict(rays=256, a=0.5), 32),
                      (dict(rays=1024, a=0.3), 32), (dict(adapt=0.05), 8)],
