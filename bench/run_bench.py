@@ -23,6 +23,7 @@ import platform
 import shutil
 import subprocess
 import sys
+import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -77,19 +78,23 @@ def render(scene_path, out_exr, integrator, spp, res, threads, defines, stats_pa
            "--stats", stats_path, "-t", str(threads), "-D", "res=%d" % res, "--seed", str(seed)]
     for k, v in defines.items():
         cmd += [CLI_SETTINGS[k], str(v)] if k in CLI_SETTINGS else ["-D", "%s=%s" % (k, v)]
-    # Peak memory of this child alone: wait4 returns its own rusage.
-    t0 = time.perf_counter()
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    _, status, usage = os.wait4(proc.pid, 0)
-    wall = time.perf_counter() - t0
-    err = proc.stderr.read()
-    proc.stdout.read()
-    code = os.waitstatus_to_exitcode(status)
+    wall, mem, code, err = timed_process(cmd)
     if code != 0:
         raise RuntimeError("render failed (%d): %s\n%s" % (code, " ".join(cmd), err.strip()))
     with open(stats_path) as f:
         stats = json.load(f)
-    return wall, usage.ru_maxrss / 1024.0, stats
+    return wall, mem, stats
+
+
+def timed_process(cmd):
+    """Wall time, peak memory (MiB; wait4 gives this child's own rusage), exit code and stderr of cmd."""
+    with tempfile.TemporaryFile(mode="w+") as err:
+        t0 = time.perf_counter()
+        proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=err, text=True)
+        _, status, usage = os.wait4(proc.pid, 0)
+        wall = time.perf_counter() - t0
+        err.seek(0)
+        return wall, usage.ru_maxrss / 1024.0, os.waitstatus_to_exitcode(status), err.read()
 
 
 MITSUBA_RENDER = os.path.join(ROOT, "bench", "mitsuba_render.py")
@@ -121,15 +126,10 @@ def render_mitsuba(python, scene_path, out_exr, spp, res, threads, seed=0, sampl
         cmd.append(sampler)
     if shutil.which("taskset"):
         cmd = ["taskset", "-c", "0-%d" % (threads - 1)] + cmd
-    t0 = time.perf_counter()
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    _, status, usage = os.wait4(proc.pid, 0)
-    wall = time.perf_counter() - t0
-    err = proc.stderr.read()
-    proc.stdout.read()
-    if os.waitstatus_to_exitcode(status) != 0:
+    wall, mem, code, err = timed_process(cmd)
+    if code != 0:
         raise RuntimeError("mitsuba failed on %s: %s" % (scene_path, err.strip()[-500:]))
-    return wall, usage.ru_maxrss / 1024.0
+    return wall, mem
 
 
 def diff(test, ref, heatmap=None):
