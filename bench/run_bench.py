@@ -359,9 +359,9 @@ def plot_scene(name, points, path):
                 front.append((t, e))
                 best = e
         ax.loglog([t for t, _ in pts], [e for _, e in pts], style, color=colour, alpha=0.5)
-        label = ("Mitsuba 3 %s" % MITSUBA_VARIANT if method == "mitsuba" else "rcache " + method) + " (process wall time)"
+        label = {"mitsuba": "Mitsuba 3 " + MITSUBA_VARIANT, "path": "rcache path tracer", "rcache": "rcache radiance cache"}[method]
         ax.loglog([t for t, _ in front], [e for _, e in front], style + "-", color=colour, label=label)
-    ax.set_xlabel("wall time (s)")
+    ax.set_xlabel("wall time of the whole process (s)")
     ax.set_ylabel("relMSE vs reference")
     ax.set_title(name)
     ax.grid(True, which="both", alpha=0.3)
