@@ -98,6 +98,33 @@ Color lightStrategyMis(const RenderContext& ctx, const Hit& hit, const Frame& fr
   return L;
 }
 
+void lightStrategyMisBatch(const RenderContext& ctx, const LightStrategyPoint* points, Rng* rngs, size_t count,
+                           int lightSamples, Color* out, LightBatchScratch& scratch, BatchQuery query) {
+  lightSamples = std::max(1, lightSamples);
+  scratch.lights.clear();
+  scratch.owner.clear();
+  for (size_t i = 0; i < count; ++i) {
+    const LightStrategyPoint& p = points[i];
+    for (int k = 0; k < lightSamples; ++k)
+      if (std::optional<UnshadowedLight> light =
+              lightSampleUnshadowed(ctx, *p.hit, p.frame, p.woLocal, *p.bsdf, rngs[i], lightSamples)) {
+        scratch.lights.push_back(*light);
+        scratch.owner.push_back(static_cast<uint32_t>(i));
+      }
+  }
+  const size_t n = scratch.lights.size();
+  scratch.rays.resize(n);
+  scratch.blocked.resize(n);
+  for (size_t j = 0; j < n; ++j) scratch.rays[j] = scratch.lights[j].shadow;
+  ctx.accel.occludedBatch(scratch.rays.data(), scratch.blocked.data(), n, query);
+  // Summed per point in light-sample order (the order of lightStrategyMis's additions).
+  std::fill(out, out + count, Color(0.0f));
+  for (size_t j = 0; j < n; ++j)
+    if (!scratch.blocked[j]) out[scratch.owner[j]] += scratch.lights[j].value;
+  if (lightSamples > 1)
+    for (size_t i = 0; i < count; ++i) out[i] /= static_cast<float>(lightSamples);
+}
+
 Color directLight(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal, const Bsdf& bsdf,
                   Rng& rng, int lightSamples) {
   Color L = lightStrategyMis(ctx, hit, frame, woLocal, bsdf, rng, lightSamples);

@@ -11,6 +11,7 @@
 //                      against the light pdf (weight 1 after a delta lobe).
 // directLight() runs both (tracing its own BSDF ray) for callers that do not continue the path.
 #include <optional>
+#include <vector>
 
 #include "bsdf/bsdf.h"
 #include "core/frame.h"
@@ -58,6 +59,26 @@ struct UnshadowedLight {
 std::optional<UnshadowedLight> lightSampleUnshadowed(const RenderContext& ctx, const Hit& hit, const Frame& frame,
                                                      const Vec3& woLocal, const Bsdf& bsdf, Rng& rng,
                                                      int misLightSamples);
+
+// lightStrategyMis over a batch of shading points, their shadow rays traced in one occlusion query
+// (BatchQuery): out[i] = lightStrategyMis(ctx, points[i]…, rngs[i], lightSamples), bit for bit
+// when the batched query answers as the single-ray one. For integrators that shade many points at
+// once (rcache's final pass). `scratch` is reused between calls (no allocation once sized).
+struct LightStrategyPoint {
+  const Hit* hit;
+  Frame frame;
+  Vec3 woLocal;
+  const Bsdf* bsdf;
+};
+struct LightBatchScratch {
+  std::vector<UnshadowedLight> lights;
+  std::vector<uint32_t> owner;
+  std::vector<Ray> rays;
+  std::vector<uint8_t> blocked;
+};
+void lightStrategyMisBatch(const RenderContext& ctx, const LightStrategyPoint* points, Rng* rngs, size_t count,
+                           int lightSamples, Color* out, LightBatchScratch& scratch,
+                           BatchQuery query = BatchQuery::Packet16);
 
 // Full direct light: `lightSamples` light samples (averaged) + one BSDF sample traced here +
 // emitterMis, all MIS-weighted for that sample count. Consumes 3·lightSamples + 3 numbers; with one

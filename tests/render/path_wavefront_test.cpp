@@ -7,6 +7,7 @@
 #include "core/image_metrics.h"
 #include "core/parallel.h"
 #include "render/camera.h"
+#include "render/direct_light.h"
 #include "render/path_integrator.h"
 #include "render/path_wavefront.h"
 #include "render/render_loop.h"
@@ -65,6 +66,44 @@ TEST(PathWavefront, SameRadiancePerSampleAsTheScalarPath) {
     for (size_t k = 0; k < n; ++k) same += batch[k] == scalar[k];
     if (query == BatchQuery::Single) EXPECT_EQ(same, n);
     else EXPECT_GE(same, n - n / 1000) << "query " << static_cast<int>(query);
+  }
+}
+
+// The batched light strategy gives each point exactly lightStrategyMis's value and leaves its Rng
+// where lightStrategyMis leaves it, for one and for several light samples per point.
+TEST(PathWavefront, BatchedLightStrategyMatchesPerPoint) {
+  const test::World w = world(16);
+  const RenderContext ctx = w.context();
+  const CameraModel camera(w.scene.camera, 16, 16);
+  std::vector<Hit> hits;
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      const Hit h = w.accel->intersect(camera.generate(Vec2(x + 0.5f, y + 0.5f)));
+      if (h.valid() && h.bsdf >= 0) hits.push_back(h);
+    }
+  ASSERT_GT(hits.size(), 100u);
+  std::vector<LightStrategyPoint> points;
+  for (const Hit& h : hits) {
+    const Frame frame = h.frame();
+    const Vec3 toCamera = glm::normalize(Vec3(0, 1, 3.6f) - h.p);
+    points.push_back({&h, frame, frame.toLocal(toCamera), w.scene.bsdfs[h.bsdf].get()});
+  }
+  LightBatchScratch scratch;
+  for (int lightSamples : {1, 3}) {
+    std::vector<Rng> rngsA, rngsB;
+    for (size_t i = 0; i < points.size(); ++i) rngsA.emplace_back(11 + i, i), rngsB.emplace_back(11 + i, i);
+    std::vector<Color> batch(points.size());
+    lightStrategyMisBatch(ctx, points.data(), rngsA.data(), points.size(), lightSamples, batch.data(), scratch);
+    size_t lit = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      const LightStrategyPoint& p = points[i];
+      const Color one = lightStrategyMis(ctx, *p.hit, p.frame, p.woLocal, *p.bsdf, rngsB[i], lightSamples);
+      EXPECT_EQ(batch[i], one) << i;
+      EXPECT_EQ(rngsA[i].nextUint(), rngsB[i].nextUint()) << i;
+      lit += maxComponent(one) > 0.0f;
+    }
+    EXPECT_GT(lit, points.size() / 3);
+    EXPECT_LT(lit, points.size());  // some points are in shadow
   }
 }
 
