@@ -32,6 +32,20 @@ void prepare(PathWave& w, size_t count) {
   fit(w.waveHits, count);
 }
 
+// Orders the active lanes by the octant of their ray direction (a stable counting sort), so that a
+// packet's rays share the order in which they visit the BVH's children.
+void sortByOctant(PathWave& w, size_t live) {
+  size_t start[9] = {0};
+  auto octant = [&](uint32_t i) {
+    const Vec3& d = w.rays[i].d;
+    return (d.x < 0.0f ? 1 : 0) | (d.y < 0.0f ? 2 : 0) | (d.z < 0.0f ? 4 : 0);
+  };
+  for (size_t k = 0; k < live; ++k) ++start[octant(w.active[k]) + 1];
+  for (int o = 0; o < 8; ++o) start[o + 1] += start[o];
+  for (size_t k = 0; k < live; ++k) w.next[start[octant(w.active[k])]++] = w.active[k];
+  std::swap(w.active, w.next);
+}
+
 }  // namespace
 
 void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& settings, Rng* rngs, size_t count,
@@ -59,6 +73,7 @@ void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& setti
     // This bounce's segments: the camera rays' hits are given; later ones go to the BVH together.
     const Hit* hits = w.cameraHits.data();
     if (depth > 0) {
+      sortByOctant(w, live);
       for (size_t k = 0; k < live; ++k) w.waveRays[k] = w.rays[w.active[k]];
       ctx.accel.intersectBatch(w.waveRays.data(), w.waveHits.data(), live, query);
       hits = w.waveHits.data();
