@@ -334,9 +334,13 @@ void Accel::intersect(const Ray* rays, Hit* hits, size_t count, bool coherent) c
   }
   // Coherent rays (a pixel's camera rays, neighbouring pixels') go to Embree as a stream with the
   // coherent flag: it traces them in packets, sharing the traversal.
+  intersectStream(rays, hits, count, true);
+}
+
+void Accel::intersectStream(const Ray* rays, Hit* hits, size_t count, bool coherent) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  if (coherent) context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
   constexpr size_t kStream = 256;
   RTCRayHit rh[kStream];
   for (size_t b = 0; b < count; b += kStream) {
@@ -376,7 +380,7 @@ struct alignas(64) Packet16 {
     }
   }
 };
-constexpr size_t kStreamRays = 256;
+constexpr size_t kOcclusionStream = 256;
 }  // namespace
 
 void Accel::intersectBatch(const Ray* rays, Hit* hits, size_t count, BatchQuery query) const {
@@ -386,20 +390,9 @@ void Accel::intersectBatch(const Ray* rays, Hit* hits, size_t count, BatchQuery 
     case BatchQuery::Single:
       for (size_t i = 0; i < count; ++i) hits[i] = intersect(rays[i]);
       return;
-    case BatchQuery::Stream: {
-      RTCRayHit rh[kStreamRays];
-      for (size_t b = 0; b < count; b += kStreamRays) {
-        const size_t n = std::min(kStreamRays, count - b);
-        for (size_t i = 0; i < n; ++i) rh[i] = emptyRayHit(rays[b + i]);
-        rtcIntersect1M(impl_->scene, &context, rh, static_cast<unsigned>(n), sizeof(RTCRayHit));
-        impl_->check("intersect");
-        for (size_t i = 0; i < n; ++i) {
-          const RTCHit& h = rh[i].hit;
-          hits[b + i] = hitOf(rays[b + i], h.geomID, h.primID, h.u, h.v, rh[i].ray.tfar);
-        }
-      }
-      break;
-    }
+    case BatchQuery::Stream:
+      intersectStream(rays, hits, count, false);
+      return;
     case BatchQuery::Packet16: {
       Packet16 p;
       for (size_t b = 0; b < count; b += 16) {
@@ -427,9 +420,9 @@ void Accel::occludedBatch(const Ray* rays, uint8_t* blocked, size_t count, Batch
       for (size_t i = 0; i < count; ++i) blocked[i] = occluded(rays[i]) ? 1 : 0;
       return;
     case BatchQuery::Stream: {
-      RTCRay r[kStreamRays];
-      for (size_t b = 0; b < count; b += kStreamRays) {
-        const size_t n = std::min(kStreamRays, count - b);
+      RTCRay r[kOcclusionStream];
+      for (size_t b = 0; b < count; b += kOcclusionStream) {
+        const size_t n = std::min(kOcclusionStream, count - b);
         for (size_t i = 0; i < n; ++i) r[i] = toEmbree(rays[b + i]);
         rtcOccluded1M(impl_->scene, &context, r, static_cast<unsigned>(n), sizeof(RTCRay));
         impl_->check("occluded");

@@ -73,6 +73,8 @@ class Accel {
   struct Impl;
   // The Hit of Embree's answer (geomID, primID, u, v, tfar) for `ray`.
   Hit hitOf(const Ray& ray, unsigned geomID, unsigned primID, float u, float v, float tfar) const;
+  // Closest hits through rtcIntersect1M streams (with Embree's coherent flag when `coherent`).
+  void intersectStream(const Ray* rays, Hit* hits, size_t count, bool coherent) const;
   const Scene& scene_;
   std::unique_ptr<Impl> impl_;
 };
