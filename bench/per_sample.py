@@ -6,7 +6,10 @@ turn), so that load from other processes on the machine hits all of them alike; 
 ratios, not the absolute times. The per-sample cost is the slope between two sample counts:
     ms/spp = (t(spp_hi) - t(spp_lo)) / (spp_hi - spp_lo)    (minimum over repetitions of each t)
 which cancels every fixed cost (interpreter start, import, scene load, BVH build, Dr.Jit's kernel
-compile — whose cache is warmed once per configuration before timing — image write).
+compile — whose cache is warmed once per configuration before timing — image write). Two clocks:
+wall time, and the CPU time of the process (all its threads, from wait4). On a machine shared with
+other work the CPU time is the steadier measure of the work per sample; on a quiet machine with
+threads that scale the two agree up to the thread count.
 
 Renderers (each a whole process, same scene file, same -D res, same thread count):
   mitsuba      Mitsuba 3 llvm_ad_rgb, the file's own integrator (path), mi.render(scene, spp=N)
@@ -43,12 +46,16 @@ mi.Bitmap(img).write(sys.argv[2])
 
 
 def timed(cmd, env=None):
+    """(wall seconds, CPU seconds of the process and all its threads)."""
     t0 = time.perf_counter()
-    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=env)
+    err = proc.stderr.read()
+    _, status, usage = os.wait4(proc.pid, 0)
     wall = time.perf_counter() - t0
-    if proc.returncode != 0:
-        raise RuntimeError("failed (%d): %s\n%s" % (proc.returncode, " ".join(cmd), proc.stderr.strip()[-500:]))
-    return wall
+    code = os.waitstatus_to_exitcode(status)
+    if code != 0:
+        raise RuntimeError("failed (%d): %s\n%s" % (code, " ".join(cmd), err.strip()[-500:]))
+    return wall, usage.ru_utime + usage.ru_stime
 
 
 def pin(cmd, threads):
@@ -95,22 +102,24 @@ def main():
         for scene in args.scenes:
             for spp in args.spp:
                 for name, cmd in commands(scene, spp).items():
-                    t = timed(cmd, env)
-                    key = (scene, spp, name)
-                    best[key] = min(best.get(key, t), t)
+                    for clock, t in zip(("wall", "cpu"), timed(cmd, env)):
+                        key = (clock, scene, spp, name)
+                        best[key] = min(best.get(key, t), t)
     lo, hi = args.spp
-    print("| scene | " + " | ".join("%s ms/spp" % n for n in names) + " | path / mitsuba |" +
-          (" path_ref / path |" if args.rcache_ref else "") + (" final / mitsuba |" if args.final else ""))
-    print("|---" * (len(names) + 2 + bool(args.rcache_ref) + bool(args.final)) + "|")
-    for scene in args.scenes:
-        slope = {n: 1000.0 * (best[(scene, hi, n)] - best[(scene, lo, n)]) / (hi - lo) for n in names}
-        row = "| %s | " % scene + " | ".join("%.2f" % slope[n] for n in names)
-        row += " | %.2f |" % (slope["path"] / slope["mitsuba"])
-        if args.rcache_ref:
-            row += " %.2f |" % (slope["path_ref"] / slope["path"])
-        if args.final:
-            row += " %.2f |" % (slope["rcache_final"] / slope["mitsuba"])
-        print(row, flush=True)
+    for clock in ("cpu", "wall"):
+        print("\n%s time:\n" % clock)
+        print("| scene | " + " | ".join("%s ms/spp" % n for n in names) + " | path / mitsuba |" +
+              (" path_ref / path |" if args.rcache_ref else "") + (" final / mitsuba |" if args.final else ""))
+        print("|---" * (len(names) + 2 + bool(args.rcache_ref) + bool(args.final)) + "|")
+        for scene in args.scenes:
+            slope = {n: 1000.0 * (best[(clock, scene, hi, n)] - best[(clock, scene, lo, n)]) / (hi - lo) for n in names}
+            row = "| %s | " % scene + " | ".join("%.2f" % slope[n] for n in names)
+            row += " | %.2f |" % (slope["path"] / slope["mitsuba"])
+            if args.rcache_ref:
+                row += " %.2f |" % (slope["path_ref"] / slope["path"])
+            if args.final:
+                row += " %.2f |" % (slope["rcache_final"] / slope["mitsuba"])
+            print(row, flush=True)
 
 
 if __name__ == "__main__":
