@@ -334,9 +334,13 @@ void Accel::intersect(const Ray* rays, Hit* hits, size_t count, bool coherent) c
   }
   // Coherent rays (a pixel's camera rays, neighbouring pixels') go to Embree as a stream with the
   // coherent flag: it traces them in packets, sharing the traversal.
+  intersectStream(rays, hits, count, true);
+}
+
+void Accel::intersectStream(const Ray* rays, Hit* hits, size_t count, bool coherent) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  if (coherent) context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
   constexpr size_t kStream = 256;
   RTCRayHit rh[kStream];
   for (size_t b = 0; b < count; b += kStream) {
@@ -347,6 +351,95 @@ void Accel::intersect(const Ray* rays, Hit* hits, size_t count, bool coherent) c
     for (size_t i = 0; i < n; ++i) {
       const RTCHit& h = rh[i].hit;
       hits[b + i] = hitOf(rays[b + i], h.geomID, h.primID, h.u, h.v, rh[i].ray.tfar);
+    }
+  }
+  impl_->rays.add(count);
+}
+
+namespace {
+// One Embree packet of 16 rays, the lanes past `count` marked invalid.
+struct alignas(64) Packet16 {
+  RTCRayHit16 rh;
+  alignas(64) int valid[16];
+  void load(const Ray* rays, size_t count) {
+    for (size_t i = 0; i < 16; ++i) {
+      const bool live = i < count;
+      const Ray& r = rays[live ? i : 0];
+      valid[i] = live ? -1 : 0;
+      rh.ray.org_x[i] = r.o.x; rh.ray.org_y[i] = r.o.y; rh.ray.org_z[i] = r.o.z;
+      rh.ray.dir_x[i] = r.d.x; rh.ray.dir_y[i] = r.d.y; rh.ray.dir_z[i] = r.d.z;
+      rh.ray.tnear[i] = r.tMin;
+      rh.ray.tfar[i] = r.tMax;
+      rh.ray.time[i] = 0.0f;
+      rh.ray.mask[i] = 0xFFFFFFFFu;
+      rh.ray.id[i] = 0;
+      rh.ray.flags[i] = 0;
+      rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+      rh.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
+      rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+    }
+  }
+};
+constexpr size_t kOcclusionStream = 256;
+}  // namespace
+
+void Accel::intersectBatch(const Ray* rays, Hit* hits, size_t count, BatchQuery query) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  switch (query) {
+    case BatchQuery::Single:
+      for (size_t i = 0; i < count; ++i) hits[i] = intersect(rays[i]);
+      return;
+    case BatchQuery::Stream:
+      intersectStream(rays, hits, count, false);
+      return;
+    case BatchQuery::Packet16: {
+      Packet16 p;
+      for (size_t b = 0; b < count; b += 16) {
+        const size_t n = std::min<size_t>(16, count - b);
+        p.load(rays + b, n);
+        rtcIntersect16(p.valid, impl_->scene, &context, &p.rh);
+        impl_->check("intersect");
+        for (size_t i = 0; i < n; ++i)
+          hits[b + i] = hitOf(rays[b + i], p.rh.hit.geomID[i], p.rh.hit.primID[i], p.rh.hit.u[i], p.rh.hit.v[i],
+                              p.rh.ray.tfar[i]);
+      }
+      break;
+    }
+  }
+  impl_->rays.add(count);
+}
+
+void Accel::occludedBatch(const Ray* rays, uint8_t* blocked, size_t count, BatchQuery query) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  // Embree marks an occluded ray by setting its tfar to −∞.
+  auto isBlocked = [](float tfar) { return tfar < 0.0f && std::isinf(tfar); };
+  switch (query) {
+    case BatchQuery::Single:
+      for (size_t i = 0; i < count; ++i) blocked[i] = occluded(rays[i]) ? 1 : 0;
+      return;
+    case BatchQuery::Stream: {
+      RTCRay r[kOcclusionStream];
+      for (size_t b = 0; b < count; b += kOcclusionStream) {
+        const size_t n = std::min(kOcclusionStream, count - b);
+        for (size_t i = 0; i < n; ++i) r[i] = toEmbree(rays[b + i]);
+        rtcOccluded1M(impl_->scene, &context, r, static_cast<unsigned>(n), sizeof(RTCRay));
+        impl_->check("occluded");
+        for (size_t i = 0; i < n; ++i) blocked[b + i] = isBlocked(r[i].tfar) ? 1 : 0;
+      }
+      break;
+    }
+    case BatchQuery::Packet16: {
+      Packet16 p;
+      for (size_t b = 0; b < count; b += 16) {
+        const size_t n = std::min<size_t>(16, count - b);
+        p.load(rays + b, n);
+        rtcOccluded16(p.valid, impl_->scene, &context, &p.rh.ray);
+        impl_->check("occluded");
+        for (size_t i = 0; i < n; ++i) blocked[b + i] = isBlocked(p.rh.ray.tfar[i]) ? 1 : 0;
+      }
+      break;
     }
   }
   impl_->rays.add(count);

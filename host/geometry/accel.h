@@ -33,6 +33,11 @@ struct Hit {
   Frame frame() const { return glm::dot(dpdu, dpdu) > 0.0f ? Frame::fromNormalTangent(ns, dpdu) : Frame::fromNormal(ns); }
 };
 
+// How a batch of independent (incoherent) rays goes to Embree: one rtcIntersect1/rtcOccluded1 per ray,
+// one rtcIntersect1M/rtcOccluded1M stream, or rtcIntersect16/rtcOccluded16 packets of 16 SoA rays.
+// All three give the same answers; they differ only in speed (bench/RESULTS.md "Batched core").
+enum class BatchQuery { Single, Stream, Packet16 };
+
 class Accel {
  public:
   explicit Accel(const Scene& scene);  // throws rc::Error on Embree failure (with Embree's message)
@@ -45,6 +50,10 @@ class Accel {
   // Batched; hits[i].t = inf on miss. coherent: the rays are similar (camera rays of
   // neighbouring samples) and go to Embree as one stream, traced in packets; otherwise one by one.
   void intersect(const Ray* rays, Hit* hits, size_t count, bool coherent = false) const;
+  // Batched queries of independent rays (a wave of path segments or shadow rays).
+  // occludedBatch: blocked[i] = 1 when something lies on ray i within [tMin, tMax], else 0.
+  void intersectBatch(const Ray* rays, Hit* hits, size_t count, BatchQuery query) const;
+  void occludedBatch(const Ray* rays, uint8_t* blocked, size_t count, BatchQuery query) const;
 
   // Offset origin for a ray leaving surface point p with geometric normal ng toward d,
   // robust against self-intersection at any scene scale.
@@ -64,6 +73,8 @@ class Accel {
   struct Impl;
   // The Hit of Embree's answer (geomID, primID, u, v, tfar) for `ray`.
   Hit hitOf(const Ray& ray, unsigned geomID, unsigned primID, float u, float v, float tfar) const;
+  // Closest hits through rtcIntersect1M streams (with Embree's coherent flag when `coherent`).
+  void intersectStream(const Ray* rays, Hit* hits, size_t count, bool coherent) const;
   const Scene& scene_;
   std::unique_ptr<Impl> impl_;
 };

@@ -18,31 +18,43 @@ Color emitted(const Scene& scene, const Hit& hit, const Vec3& wo) {
   return glm::dot(hit.ng, wo) > 0.0f ? e.radiance : Color(0.0f);
 }
 
-bool visible(const Accel& accel, const Hit& hit, const LightSample& ls) {
-  const Ray shadow = std::isinf(ls.dist) ? Accel::spawnRay(hit, ls.wi) : Accel::spawnRayTo(hit, ls.lightPoint);
-  return !accel.occluded(shadow);
+Ray shadowRay(const Hit& hit, const LightSample& ls) {
+  return std::isinf(ls.dist) ? Accel::spawnRay(hit, ls.wi) : Accel::spawnRayTo(hit, ls.lightPoint);
 }
 
-namespace {
-// One light sample and its shadow ray. misLightSamples = n > 0: MIS-weighted as one of n light
-// samples beside one BSDF sample (power heuristic on n·pdf_light vs pdf_bsdf, Veach's multi-sample
-// MIS); 0: light sampling alone, weight 1.
-Color lightSampleContribution(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
-                              const Bsdf& bsdf, Rng& rng, int misLightSamples) {
+bool visible(const Accel& accel, const Hit& hit, const LightSample& ls) { return !accel.occluded(shadowRay(hit, ls)); }
+
+std::optional<UnshadowedLight> lightSampleUnshadowed(const RenderContext& ctx, const Hit& hit, const Frame& frame,
+                                                     const Vec3& woLocal, const Bsdf& bsdf, Rng& rng,
+                                                     int misLightSamples) {
   // Always draw the same three numbers so the stream stays aligned whatever happens below; the
   // point on the light first, so that it gets a low-discrepancy pair of its own.
   const Vec2 u = rng.next2D();
   const float uLight = rng.nextFloat();
-  if (ctx.lights.empty() || !hasSmoothLobe(bsdf)) return Color(0.0f);
+  if (ctx.lights.empty() || !hasSmoothLobe(bsdf)) return std::nullopt;
   const std::optional<LightSample> ls = ctx.lights.sample(hit.p, u, uLight);
-  if (!ls || !(ls->pdf > 0.0f || ls->delta)) return Color(0.0f);
+  if (!ls || !(ls->pdf > 0.0f || ls->delta)) return std::nullopt;
   const Vec3 wiLocal = frame.toLocal(ls->wi);
   const Color f = bsdf.eval(woLocal, wiLocal);
-  if (maxComponent(f) <= 0.0f || maxComponent(ls->radiance) <= 0.0f) return Color(0.0f);
-  if (!visible(ctx.accel, hit, *ls)) return Color(0.0f);
-  if (misLightSamples == 0 || ls->delta) return f * ls->radiance;
-  const float n = static_cast<float>(misLightSamples);
-  return f * ls->radiance * powerHeuristic(n * ls->pdf, bsdf.pdf(woLocal, wiLocal));
+  if (maxComponent(f) <= 0.0f || maxComponent(ls->radiance) <= 0.0f) return std::nullopt;
+  UnshadowedLight out;
+  out.shadow = shadowRay(hit, *ls);
+  if (misLightSamples == 0 || ls->delta) {
+    out.value = f * ls->radiance;
+  } else {
+    const float n = static_cast<float>(misLightSamples);
+    out.value = f * ls->radiance * powerHeuristic(n * ls->pdf, bsdf.pdf(woLocal, wiLocal));
+  }
+  return out;
+}
+
+namespace {
+// One light sample and its shadow ray.
+Color lightSampleContribution(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
+                              const Bsdf& bsdf, Rng& rng, int misLightSamples) {
+  const std::optional<UnshadowedLight> light = lightSampleUnshadowed(ctx, hit, frame, woLocal, bsdf, rng, misLightSamples);
+  if (!light || ctx.accel.occluded(light->shadow)) return Color(0.0f);
+  return light->value;
 }
 }  // namespace
 
@@ -84,6 +96,33 @@ Color lightStrategyMis(const RenderContext& ctx, const Hit& hit, const Frame& fr
     L += lightSampleContribution(ctx, hit, frame, woLocal, bsdf, rng, lightSamples);
   if (lightSamples > 1) L /= static_cast<float>(lightSamples);
   return L;
+}
+
+void lightStrategyMisBatch(const RenderContext& ctx, const LightStrategyPoint* points, Rng* rngs, size_t count,
+                           int lightSamples, Color* out, LightBatchScratch& scratch, BatchQuery query) {
+  lightSamples = std::max(1, lightSamples);
+  scratch.lights.clear();
+  scratch.owner.clear();
+  for (size_t i = 0; i < count; ++i) {
+    const LightStrategyPoint& p = points[i];
+    for (int k = 0; k < lightSamples; ++k)
+      if (std::optional<UnshadowedLight> light =
+              lightSampleUnshadowed(ctx, *p.hit, p.frame, p.woLocal, *p.bsdf, rngs[i], lightSamples)) {
+        scratch.lights.push_back(*light);
+        scratch.owner.push_back(static_cast<uint32_t>(i));
+      }
+  }
+  const size_t n = scratch.lights.size();
+  scratch.rays.resize(n);
+  scratch.blocked.resize(n);
+  for (size_t j = 0; j < n; ++j) scratch.rays[j] = scratch.lights[j].shadow;
+  ctx.accel.occludedBatch(scratch.rays.data(), scratch.blocked.data(), n, query);
+  // Summed per point in light-sample order (the order of lightStrategyMis's additions).
+  std::fill(out, out + count, Color(0.0f));
+  for (size_t j = 0; j < n; ++j)
+    if (!scratch.blocked[j]) out[scratch.owner[j]] += scratch.lights[j].value;
+  if (lightSamples > 1)
+    for (size_t i = 0; i < count; ++i) out[i] /= static_cast<float>(lightSamples);
 }
 
 Color directLight(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal, const Bsdf& bsdf,

@@ -11,6 +11,7 @@
 //                      against the light pdf (weight 1 after a delta lobe).
 // directLight() runs both (tracing its own BSDF ray) for callers that do not continue the path.
 #include <optional>
+#include <vector>
 
 #include "bsdf/bsdf.h"
 #include "core/frame.h"
@@ -47,6 +48,38 @@ Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorl
 Color lightStrategyMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
                        const Bsdf& bsdf, Rng& rng, int lightSamples);
 
+// One light sample (MIS-weighted as one of misLightSamples beside one BSDF sample; 0 = light
+// sampling alone, weight 1) before its shadow ray is traced: `value` counts only when `shadow` is
+// unoccluded. Empty when the sample carries nothing (no ray needed). Consumes 3 numbers. Lets a
+// batched caller trace the shadow rays of many vertices in one occlusion query.
+struct UnshadowedLight {
+  Ray shadow;
+  Color value{0.0f};
+};
+std::optional<UnshadowedLight> lightSampleUnshadowed(const RenderContext& ctx, const Hit& hit, const Frame& frame,
+                                                     const Vec3& woLocal, const Bsdf& bsdf, Rng& rng,
+                                                     int misLightSamples);
+
+// lightStrategyMis over a batch of shading points, their shadow rays traced in one occlusion query
+// (BatchQuery): out[i] = lightStrategyMis(ctx, points[i]…, rngs[i], lightSamples), bit for bit
+// when the batched query answers as the single-ray one. For integrators that shade many points at
+// once (rcache's final pass). `scratch` is reused between calls (no allocation once sized).
+struct LightStrategyPoint {
+  const Hit* hit;
+  Frame frame;
+  Vec3 woLocal;
+  const Bsdf* bsdf;
+};
+struct LightBatchScratch {
+  std::vector<UnshadowedLight> lights;
+  std::vector<uint32_t> owner;
+  std::vector<Ray> rays;
+  std::vector<uint8_t> blocked;
+};
+void lightStrategyMisBatch(const RenderContext& ctx, const LightStrategyPoint* points, Rng* rngs, size_t count,
+                           int lightSamples, Color* out, LightBatchScratch& scratch,
+                           BatchQuery query = BatchQuery::Packet16);
+
 // Full direct light: `lightSamples` light samples (averaged) + one BSDF sample traced here +
 // emitterMis, all MIS-weighted for that sample count. Consumes 3·lightSamples + 3 numbers; with one
 // light sample it is exactly the path tracer's per-vertex estimator.
@@ -74,7 +107,9 @@ constexpr float kSmallLightsSolidAngle = 0.5f;
 Color directLightCheapest(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
                           const Bsdf& bsdf, Rng& rng, int lightSamples, bool* lightOnly = nullptr);
 
-// Shadow ray from a surface hit toward a light sample; true when the light point is visible.
+// Shadow ray from a surface hit toward a light sample.
+Ray shadowRay(const Hit& hit, const struct LightSample& ls);
+// True when the light sample's point is visible from the hit (its shadow ray unoccluded).
 bool visible(const Accel& accel, const Hit& hit, const struct LightSample& ls);
 
 }  // namespace rc

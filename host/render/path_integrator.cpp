@@ -1,5 +1,6 @@
 #include "render/path_integrator.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "core/error.h"
@@ -7,6 +8,7 @@
 #include "render/direct_light.h"
 #include "render/film.h"
 #include "render/light_sampler.h"
+#include "render/path_wavefront.h"
 #include "render/render_loop.h"
 
 namespace rc {
@@ -71,7 +73,7 @@ namespace {
 
 class PathIntegrator final : public Integrator {
  public:
-  explicit PathIntegrator(const IntegratorSettings& s) : settings_(s) {
+  PathIntegrator(const IntegratorSettings& s, PathCore core, BatchQuery query) : settings_(s), core_(core), query_(query) {
     if (s.maxDepth < -1) throw Error("integrator path: max_depth must be -1 (unbounded) or ≥ 0");
     if (s.rrDepth < 1) throw Error("integrator path: rr_depth must be ≥ 1");
   }
@@ -90,9 +92,7 @@ class PathIntegrator final : public Integrator {
     loop.cameraRay = [&](const Vec2& filmPos) { return camera.generate(filmPos); };
     loop.adaptive = ctx.options.adaptive;
     loop.phase = "path";
-    const RenderLoopResult result = renderSamples(ctx, film, loop, [&](const SampleInput& in, Rng& rng, TileFilm&) {
-      return pathRadiance(ctx, settings_, *in.cameraRay, rng, in.cameraHit);
-    });
+    const RenderLoopResult result = renderPathSamples(ctx, film, loop);
     Image image = film.develop();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double rays = static_cast<double>(ctx.accel.raysTraced() - rays0);
@@ -112,13 +112,35 @@ class PathIntegrator final : public Integrator {
   }
 
  private:
+  RenderLoopResult renderPathSamples(const RenderContext& ctx, Film& film, const RenderLoopSettings& loop) const {
+    if (core_ == PathCore::Scalar)
+      return renderSamples(ctx, film, loop, [&](const SampleInput& in, Rng& rng, TileFilm&) {
+        return pathRadiance(ctx, settings_, *in.cameraRay, rng, in.cameraHit);
+      });
+    // A tile row's samples (32 pixels × spp) are cut into waves of kWaveSize lanes: enough for full
+    // packets through most of a path's bounces, small enough that a wave's buffers stay in cache.
+    constexpr size_t kWaveSize = 256;
+    return renderSampleBatches(ctx, film, loop, [&](const SampleInput* in, Rng* rngs, size_t n, Color* out) {
+      thread_local PathWave wave;
+      for (size_t b = 0; b < n; b += kWaveSize) {
+        const size_t m = std::min(kWaveSize, n - b);
+        wave.cameraRays.resize(m);
+        wave.cameraHits.resize(m);
+        for (size_t k = 0; k < m; ++k) wave.cameraRays[k] = *in[b + k].cameraRay, wave.cameraHits[k] = *in[b + k].cameraHit;
+        pathRadianceBatch(ctx, settings_, rngs + b, m, out + b, wave, query_);
+      }
+    });
+  }
+
   IntegratorSettings settings_;
+  PathCore core_;
+  BatchQuery query_;
 };
 
 }  // namespace
 
-std::unique_ptr<Integrator> makePathIntegrator(const IntegratorSettings& settings) {
-  return std::make_unique<PathIntegrator>(settings);
+std::unique_ptr<Integrator> makePathIntegrator(const IntegratorSettings& settings, PathCore core, BatchQuery query) {
+  return std::make_unique<PathIntegrator>(settings, core, query);
 }
 
 }  // namespace rc

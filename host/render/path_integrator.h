@@ -9,7 +9,11 @@
 
 namespace rc {
 
-std::unique_ptr<Integrator> makePathIntegrator(const IntegratorSettings& settings);
+// The per-sample core that renders: the batched wavefront core (render/path_wavefront.h), or the
+// scalar pathRadiance it is tested against; `query` is how the wavefront core's rays go to Embree.
+enum class PathCore { Wavefront, Scalar };
+std::unique_ptr<Integrator> makePathIntegrator(const IntegratorSettings& settings, PathCore core = PathCore::Wavefront,
+                                               BatchQuery query = BatchQuery::Packet16);
 
 }  // namespace rc
 

@@ -66,8 +66,14 @@ bool usesLowDiscrepancy(const RenderContext& ctx) {
   return name == "ldsampler";
 }
 
-RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
-                               const SampleFn& fn) {
+namespace {
+
+// The sample loop shared by renderSamples and renderSampleBatches: per tile row, the row's samples
+// (RNG streams, film positions, camera rays and their hits traced as one coherent stream), then
+// `shadeRow(inputs, rngs, n, radiance)`, then the splats in sample order.
+template <class ShadeRow>
+RenderLoopResult sampleLoop(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
+                            const ShadeRow& shadeRow) {
   std::atomic<uint64_t> samples{0}, nans{0};
   const int width = film.width();
   const int spp = std::max(1, settings.spp);
@@ -79,48 +85,48 @@ RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const Rende
     const bool batch = static_cast<bool>(settings.cameraRay);
     const std::vector<SampleRange>& ranges = adaptive.ranges();
     std::vector<Rng> rngs;
-    std::vector<Vec2> pos;
+    std::vector<SampleInput> inputs;
     std::vector<Ray> rays;
     std::vector<Hit> hits;
+    std::vector<Color> radiance;
     for (int py = tile.y0(); py < tile.y1(); ++py) {
       const size_t row = static_cast<size_t>(py) * width;
-      // The row's samples: their RNG streams and film positions, then (batch) the camera rays.
       rngs.clear();
-      pos.clear();
+      inputs.clear();
       for (int px = tile.x0(); px < tile.x1(); ++px)
         for (int s = ranges[row + px].first; s < ranges[row + px].end; ++s) {
           rngs.push_back(pixelRng(settings.seed, width, px, py, s, settings.lowDiscrepancy));
-          pos.push_back(Vec2(static_cast<float>(px), static_cast<float>(py)) + rngs.back().next2D());
-        }
-      if (pos.empty()) continue;
-      if (batch) {
-        rays.resize(pos.size());
-        hits.resize(pos.size());
-        for (size_t k = 0; k < pos.size(); ++k) rays[k] = settings.cameraRay(pos[k]);
-        ctx.accel.intersect(rays.data(), hits.data(), rays.size(), true);
-      }
-      size_t k = 0;
-      for (int px = tile.x0(); px < tile.x1(); ++px)
-        for (int s = ranges[row + px].first; s < ranges[row + px].end; ++s, ++k) {
-          Rng& rng = rngs[k];
           SampleInput in;
           in.px = px;
           in.py = py;
           in.sampleIndex = s;
-          in.filmPos = pos[k];
-          if (batch) {
-            in.cameraRay = &rays[k];
-            in.cameraHit = &hits[k];
-          }
-          const Color L = fn(in, rng, tile);
-          if (!isFinite(L)) {
-            ++tileNans;  // dropped, never splatted
-            continue;
-          }
-          tile.splat(in.filmPos, L);
-          adaptive.add(row + px, s, L);
-          ++tileSamples;
+          in.filmPos = Vec2(static_cast<float>(px), static_cast<float>(py)) + rngs.back().next2D();
+          inputs.push_back(in);
         }
+      const size_t n = inputs.size();
+      if (n == 0) continue;
+      if (batch) {
+        rays.resize(n);
+        hits.resize(n);
+        for (size_t k = 0; k < n; ++k) rays[k] = settings.cameraRay(inputs[k].filmPos);
+        ctx.accel.intersect(rays.data(), hits.data(), n, true);
+        for (size_t k = 0; k < n; ++k) {
+          inputs[k].cameraRay = &rays[k];
+          inputs[k].cameraHit = &hits[k];
+        }
+      }
+      radiance.resize(n);
+      shadeRow(inputs.data(), rngs.data(), n, radiance.data(), tile);
+      for (size_t k = 0; k < n; ++k) {
+        const Color& L = radiance[k];
+        if (!isFinite(L)) {
+          ++tileNans;  // dropped, never splatted
+          continue;
+        }
+        tile.splat(inputs[k].filmPos, L);
+        adaptive.add(row + inputs[k].px, inputs[k].sampleIndex, L);
+        ++tileSamples;
+      }
     }
     samples += tileSamples;
     nans += tileNans;
@@ -136,6 +142,22 @@ RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const Rende
   result.adaptivePixels = adaptive.pixelsAboveSpp();
   result.maxPixelSamples = adaptive.maxSamples();
   return result;
+}
+
+}  // namespace
+
+RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
+                               const SampleFn& fn) {
+  return sampleLoop(ctx, film, settings,
+                    [&](const SampleInput* in, Rng* rngs, size_t n, Color* out, TileFilm& tile) {
+                      for (size_t k = 0; k < n; ++k) out[k] = fn(in[k], rngs[k], tile);
+                    });
+}
+
+RenderLoopResult renderSampleBatches(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
+                                     const BatchFn& fn) {
+  return sampleLoop(ctx, film, settings,
+                    [&](const SampleInput* in, Rng* rngs, size_t n, Color* out, TileFilm&) { fn(in, rngs, n, out); });
 }
 
 }  // namespace rc

@@ -51,6 +51,12 @@ using TileFn = std::function<void(TileFilm& tile)>;
 
 RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
                                const SampleFn& fn);
+// Per-row batched work (the path tracer's wavefront core): the radiance of n samples at once,
+// out[k] for in[k] drawing from rngs[k]. With RenderLoopSettings::cameraRay set, every input
+// carries its camera ray and hit. Same loop, seeds, splat order and NaN handling as renderSamples.
+using BatchFn = std::function<void(const SampleInput* in, Rng* rngs, size_t n, Color* out)>;
+RenderLoopResult renderSampleBatches(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
+                                     const BatchFn& fn);
 RenderLoopResult renderTiles(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
                              const TileFn& fn);
 

@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""Thread speed-up of each phase: the path tracer's render, rcache's cache fill and final pass, at
+1 thread and at N threads (default 2), interleaved repetitions (every repetition runs every
+configuration once, in turn, so load from other processes hits them alike), minimum time of each.
+
+Phase times are the renderer's own stats (time_render_s for --integrator path; time_cache_fill_s
+and time_final_pass_s for --integrator rcache), so scene load, BVH build and image write are not
+counted. Also printed: the process's CPU time over its wall time at N threads ("busy", N at best),
+which shows how much of the run kept the N threads working.
+
+Usage (repository root, after scripts/build.sh):
+  python3 bench/thread_speedup.py [--threads 2] [--res 256] [--spp 16] [--reps 3] [--scenes cornell_glossy]
+Prints a Markdown table.
+"""
+import argparse
+import json
+import os
+import subprocess
+import tempfile
+import time
+
+PHASES = {"path": ["time_render_s"], "rcache": ["time_cache_fill_s", "time_final_pass_s"]}
+
+
+def run(exe, scene, integrator, threads, res, spp, work):
+    stats = os.path.join(work, "stats.json")
+    cmd = [exe, scene, "--integrator", integrator, "--spp", str(spp), "-D", "res=%d" % res, "-t", str(threads),
+           "--quiet", "-o", os.path.join(work, "out.exr"), "--stats", stats]
+    t0 = time.perf_counter()
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    _, status, usage = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - t0
+    err = proc.stderr.read()
+    if os.waitstatus_to_exitcode(status) != 0:
+        raise RuntimeError("failed: %s\n%s" % (" ".join(cmd), err))
+    with open(stats) as f:
+        s = json.load(f)
+    return s, (usage.ru_utime + usage.ru_stime) / wall
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--rcache", default="build/rcache")
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--res", type=int, default=256)
+    ap.add_argument("--spp", type=int, default=16)
+    ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--scenes", nargs="*", default=["cornell_glossy"])
+    args = ap.parse_args()
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    work = tempfile.mkdtemp(prefix="rcache_threads_")
+    best, busy = {}, {}
+    for _ in range(args.reps):
+        for scene in args.scenes:
+            path = os.path.join(root, "scenes", scene + ".xml")
+            for integrator, keys in PHASES.items():
+                for t in (1, args.threads):
+                    s, b = run(args.rcache, path, integrator, t, args.res, args.spp, work)
+                    for k in keys:
+                        key = (scene, k, t)
+                        best[key] = min(best.get(key, s[k]), s[k])
+                    if t == args.threads:
+                        busy[(scene, integrator)] = max(busy.get((scene, integrator), 0.0), b)
+    n = args.threads
+    print("| scene | phase | 1 thread s | %d threads s | speed-up | busy at %d |" % (n, n))
+    print("|---|---|---|---|---|---|")
+    for scene in args.scenes:
+        for integrator, keys in PHASES.items():
+            for k in keys:
+                t1, tn = best[(scene, k, 1)], best[(scene, k, n)]
+                print("| %s | %s | %.3f | %.3f | %.2f× | %.2f |" % (scene, k, t1, tn, t1 / tn, busy[(scene, integrator)]))
+
+
+if __name__ == "__main__":
+    main()

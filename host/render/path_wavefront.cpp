@@ -1,0 +1,148 @@
+#include "render/path_wavefront.h"
+
+#include <algorithm>
+
+#include "render/direct_light.h"
+#include "render/light_sampler.h"
+
+namespace rc {
+
+namespace {
+
+template <class T>
+void fit(std::vector<T>& v, size_t n) {
+  if (v.size() < n) v.resize(n);
+}
+
+void prepare(PathWave& w, size_t count) {
+  fit(w.rays, count);
+  fit(w.radiance, count);
+  fit(w.throughput, count);
+  fit(w.prevP, count);
+  fit(w.eta, count);
+  fit(w.prevPdf, count);
+  fit(w.prevDelta, count);
+  fit(w.active, count);
+  fit(w.next, count);
+  fit(w.shadowRays, count);
+  fit(w.shadowValue, count);
+  fit(w.shadowLane, count);
+  fit(w.blocked, count);
+  fit(w.waveRays, count);
+  fit(w.waveHits, count);
+}
+
+// Orders the active lanes by the octant of their ray direction (a stable counting sort), so that a
+// packet's rays share the order in which they visit the BVH's children.
+void sortByOctant(PathWave& w, size_t live) {
+  size_t start[9] = {0};
+  auto octant = [&](uint32_t i) {
+    const Vec3& d = w.rays[i].d;
+    return (d.x < 0.0f ? 1 : 0) | (d.y < 0.0f ? 2 : 0) | (d.z < 0.0f ? 4 : 0);
+  };
+  for (size_t k = 0; k < live; ++k) ++start[octant(w.active[k]) + 1];
+  for (int o = 0; o < 8; ++o) start[o + 1] += start[o];
+  for (size_t k = 0; k < live; ++k) w.next[start[octant(w.active[k])]++] = w.active[k];
+  std::swap(w.active, w.next);
+}
+
+}  // namespace
+
+void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& settings, Rng* rngs, size_t count,
+                       Color* out, PathWave& w, BatchQuery query) {
+  const Scene& scene = ctx.scene;
+  const int maxDepth = settings.maxDepth;
+  if (maxDepth == 0) {
+    std::fill(out, out + count, Color(0.0f));
+    return;
+  }
+  prepare(w, count);
+  size_t live = count;
+  for (size_t i = 0; i < count; ++i) {
+    w.radiance[i] = Color(0.0f);
+    w.throughput[i] = Color(1.0f);
+    w.eta[i] = 1.0f;
+    w.prevP[i] = Vec3(0.0f);
+    w.prevPdf[i] = 0.0f;
+    w.prevDelta[i] = 1;
+    w.rays[i] = w.cameraRays[i];
+    w.active[i] = static_cast<uint32_t>(i);
+  }
+
+  for (int depth = 0; live > 0; ++depth) {
+    // This bounce's segments: the camera rays' hits are given; later ones go to the BVH together.
+    const Hit* hits = w.cameraHits.data();
+    if (depth > 0) {
+      sortByOctant(w, live);
+      for (size_t k = 0; k < live; ++k) w.waveRays[k] = w.rays[w.active[k]];
+      ctx.accel.intersectBatch(w.waveRays.data(), w.waveHits.data(), live, query);
+      hits = w.waveHits.data();
+    }
+    size_t shadows = 0, survivors = 0;
+    for (size_t k = 0; k < live; ++k) {
+      const uint32_t i = w.active[k];
+      const Hit& hit = hits[depth == 0 ? i : k];
+      const Ray& ray = w.rays[i];
+      Color& L = w.radiance[i];
+      Color& throughput = w.throughput[i];
+      // Emission found by this segment: full weight for the camera ray, MIS against light sampling after.
+      if (depth == 0) {
+        if (!settings.hideEmitters)
+          L += throughput * (hit.valid() ? emitted(scene, hit, -ray.d) : ctx.lights.environment(ray.d));
+      } else {
+        L += throughput * emitterMis(ctx, w.prevP[i], ray.d, hit, w.prevPdf[i], w.prevDelta[i] != 0);
+      }
+      if (!hit.valid()) continue;
+      // Mitsuba: a vertex may extend the path only while the path has fewer than max_depth segments.
+      if (maxDepth >= 0 && depth + 1 >= maxDepth) continue;
+      if (hit.bsdf < 0 || hit.bsdf >= static_cast<int>(scene.bsdfs.size()) || !scene.bsdfs[hit.bsdf]) continue;
+      const Bsdf& bsdf = *scene.bsdfs[hit.bsdf];
+      const Frame frame = hit.frame();
+      const Vec3 wo = frame.toLocal(-ray.d);
+      Rng& rng = rngs[i];
+
+      // Light sampling: its shadow ray joins the bounce's occlusion query; the value is added after.
+      if (std::optional<UnshadowedLight> light = lightSampleUnshadowed(ctx, hit, frame, wo, bsdf, rng, 1)) {
+        w.shadowRays[shadows] = light->shadow;
+        w.shadowValue[shadows] = throughput * light->value;
+        w.shadowLane[shadows] = i;
+        ++shadows;
+      }
+
+      const Vec2 u = rng.next2D();
+      const float uLobe = rng.nextFloat();
+      const std::optional<BsdfSample> bs = bsdf.sample(wo, uLobe, u);
+      if (!bs) continue;
+      throughput *= bs->weight;
+      w.eta[i] *= bs->eta;
+      if (!(maxComponent(throughput) > 0.0f) || !isFinite(throughput)) continue;
+      const Vec3 dir = frame.toWorld(bs->wi);
+      w.prevP[i] = hit.p;
+      w.prevPdf[i] = bs->pdf;
+      w.prevDelta[i] = (bs->lobe & kLobeDelta) != 0;
+      w.rays[i] = Accel::spawnRay(hit, dir);
+
+      // Russian roulette (Mitsuba 3): once depth ≥ rr_depth, continue with q = min(max(β)·η², 0.95).
+      const int segments = depth + 1;
+      const float uRr = rng.nextFloat();
+      if (segments >= settings.rrDepth) {
+        const float q = std::min(maxComponent(throughput) * w.eta[i] * w.eta[i], 0.95f);
+        if (!(uRr < q)) continue;
+        throughput /= q;
+      }
+      w.next[survivors++] = i;
+    }
+    // Each lane has at most one shadow ray per bounce, added before the next bounce's emission:
+    // the same order of additions as pathRadiance.
+    if (shadows > 0) {
+      ctx.accel.occludedBatch(w.shadowRays.data(), w.blocked.data(), shadows, query);
+      for (size_t s = 0; s < shadows; ++s)
+        if (!w.blocked[s]) w.radiance[w.shadowLane[s]] += w.shadowValue[s];
+    }
+    std::swap(w.active, w.next);
+    live = survivors;
+  }
+  std::copy(w.radiance.begin(), w.radiance.begin() + count, out);
+}
+
+}  // namespace rc

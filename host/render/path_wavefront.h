@@ -1,0 +1,45 @@
+#pragma once
+// The path tracer's batched (wavefront) core: many camera samples advance together one path vertex
+// at a time, so each bounce's extension rays go to the BVH as one batched query and each bounce's
+// shadow rays as one occlusion query, instead of one Embree call per ray.
+//
+// Same estimator as pathRadiance (render/path_integrator.h), which stays as the reference: every
+// sample draws the same numbers from its own Rng in the same order (light sample, BSDF sample,
+// Russian roulette per vertex) and adds the same terms in the same order, so with the same hits a
+// sample's radiance is bit-identical to pathRadiance's.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/rng.h"
+#include "render/integrator.h"
+
+namespace rc {
+
+// Reusable per-thread buffers of one wave (structure of arrays over the wave's lanes); sized on
+// first use and kept, so rendering allocates nothing per sample.
+struct PathWave {
+  std::vector<Ray> cameraRays;  // input: the wave's camera rays and their hits
+  std::vector<Hit> cameraHits;
+  std::vector<Ray> rays;  // per lane: the segment it traces next
+  std::vector<Color> radiance, throughput;
+  std::vector<Vec3> prevP;
+  std::vector<float> eta, prevPdf;
+  std::vector<uint8_t> prevDelta;
+  std::vector<uint32_t> active, next;  // lanes still extending their path
+  // This bounce's shadow rays and what each adds to its lane if unoccluded.
+  std::vector<Ray> shadowRays;
+  std::vector<Color> shadowValue;
+  std::vector<uint32_t> shadowLane;
+  std::vector<uint8_t> blocked;
+  std::vector<Ray> waveRays;  // gathered rays of the active lanes
+  std::vector<Hit> waveHits;
+};
+
+// Radiance of `count` camera samples: wave.cameraRays[i] with its first hit wave.cameraHits[i]
+// (filled by the caller, already traced), drawing from rngs[i]; out[i] receives the sample's
+// radiance. `query` picks how the batches go to Embree.
+void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& settings, Rng* rngs, size_t count,
+                       Color* out, PathWave& wave, BatchQuery query = BatchQuery::Packet16);
+
+}  // namespace rc
