@@ -101,7 +101,7 @@ void BrdfTableSet::build(const std::vector<BsdfPtr>& bsdfs, const BrdfTableOptio
     const auto start = std::chrono::steady_clock::now();
     MaterialPlan plan;
     plan.name = bsdf.id.empty() ? bsdf.typeName() : bsdf.id;
-    plan.technique = kTechniqueImportanceSampling;
+    plan.technique = Technique::ImportanceSampling;
     if (kinds[m] == Kind::Sampled) {
       plans_.push_back(plan);
       continue;
@@ -110,10 +110,10 @@ void BrdfTableSet::build(const std::vector<BsdfPtr>& bsdfs, const BrdfTableOptio
     bool hit = true;
     int order = 0;
     if (kinds[m] == Kind::Diffuse) {
-      plan.technique = kTechniqueIrradianceCache;
+      plan.technique = Technique::IrradianceCache;
       order = opt.diffuseOrder;
     } else if (opt.orderOverride > 0) {
-      plan.technique = kTechniqueRadianceCache;
+      plan.technique = Technique::RadianceCache;
       order = opt.orderOverride;
     } else {
       const std::string planKey = base + "\nplan tol=" + hexFloat(opt.tolerance) + " theta=" + hexFloat(opt.planMaxThetaDeg) + " max=" +
@@ -142,7 +142,7 @@ void BrdfTableSet::build(const std::vector<BsdfPtr>& bsdfs, const BrdfTableOptio
         plans_.push_back(plan);
         continue;
       }
-      plan.technique = kTechniqueRadianceCache;
+      plan.technique = Technique::RadianceCache;
       plan.truncationError = worst[order - 1];
     }
 
@@ -205,6 +205,16 @@ void BrdfTableSet::lookup(int tableIndex, const Vec3& wo, std::vector<double>& o
   lookupTable(t, data_.data() + t.offset, wo, out);
 }
 
+const char* techniqueName(Technique t) {
+  switch (t) {
+    case Technique::IrradianceCache: return "irradiance cache";
+    case Technique::RadianceCache: return "radiance cache";
+    case Technique::ImportanceSampling: return "importance sampling";
+    case Technique::None: break;
+  }
+  return "none";
+}
+
 std::string BrdfTableSet::materialsJson() const {
   std::ostringstream o;
   o << "[";
@@ -212,7 +222,7 @@ std::string BrdfTableSet::materialsJson() const {
     const MaterialPlan& p = plans_[i];
     char ms[32];
     std::snprintf(ms, sizeof ms, "%.3f", p.tableMs);
-    o << (i ? ", " : "") << "{\"name\": \"" << jsonEscape(p.name) << "\", \"technique\": \"" << jsonEscape(p.technique)
+    o << (i ? ", " : "") << "{\"name\": \"" << jsonEscape(p.name) << "\", \"technique\": \"" << techniqueName(p.technique)
       << "\", \"sh_order\": " << p.shOrder << ", \"table_ms\": " << ms
       << ", \"table_cache_hit\": " << (p.tableCacheHit ? "true" : "false") << "}";
   }

@@ -21,13 +21,17 @@
 
 namespace rc {
 
-inline constexpr const char* kTechniqueRadianceCache = "radiance cache";
-inline constexpr const char* kTechniqueIrradianceCache = "irradiance cache";
-inline constexpr const char* kTechniqueImportanceSampling = "importance sampling";
+// How a material's indirect light is estimated; shared by the plan and the cache engine (which
+// uses None for points that get no indirect light: inactive, or the back of a one-sided BSDF).
+enum class Technique { None, IrradianceCache, RadianceCache, ImportanceSampling };
+
+inline bool isCached(Technique t) { return t == Technique::IrradianceCache || t == Technique::RadianceCache; }
+// "irradiance cache", "radiance cache", "importance sampling" (statistics), "none".
+const char* techniqueName(Technique t);
 
 struct MaterialPlan {
   std::string name;          // Bsdf::id
-  std::string technique;     // one of the kTechnique* strings
+  Technique technique = Technique::ImportanceSampling;
   int shOrder = 0;           // table order (0 without a table)
   double tableMs = 0.0;      // time to plan + build or load this material's table
   bool tableCacheHit = false;  // table (and order choice) loaded from the disk cache

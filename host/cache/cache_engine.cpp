@@ -1,23 +1,21 @@
 #include "cache/cache_engine.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "cache/record_octree.h"
+#include "cache/world_frame.h"
 #include "cl/sh_backend.h"
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/rng.h"
+#include "core/timing.h"
 #include "render/direct_light.h"
 #include "sh/sh_basis.h"
 
 namespace rc {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Interpolation/shading runs in chunks so that Λ of a chunk ([P][3][n²] floats) stays small
 // (4096 points at order 16 = 12 MB) however many points a batch of records produced.
@@ -43,20 +41,17 @@ CacheEngine::CacheEngine(const RenderContext& ctx, const RcacheParams& params, c
       lo_(sceneLo), hi_(sceneHi) {
   const auto& bsdfs = ctx.scene.bsdfs;
   const auto& plans = tables.plans();
-  planTech_.assign(bsdfs.size(), 0);
+  planTech_.assign(bsdfs.size(), Technique::ImportanceSampling);
   planOrder_.assign(bsdfs.size(), 0);
   twoSided_.assign(bsdfs.size(), false);
   for (size_t i = 0; i < bsdfs.size(); ++i) {
     twoSided_[i] = bsdfs[i]->typeName() == "twosided";
     const MaterialPlan* plan = i < plans.size() ? &plans[i] : nullptr;
-    if (plan && plan->tableIndex >= 0 &&
-        (plan->technique == kTechniqueRadianceCache || plan->technique == kTechniqueIrradianceCache)) {
-      planTech_[i] = 1;
+    if (plan && plan->tableIndex >= 0 && isCached(plan->technique)) {
+      planTech_[i] = plan->technique;
       // Records of a material have its table's order; the TL approximation needs only the
       // irradiance and the dominant direction (bands 0..2).
       planOrder_[i] = params.tlMode ? 3 : plan->shOrder;
-    } else {
-      planTech_[i] = 2;
     }
   }
 }
@@ -67,12 +62,12 @@ float CacheEngine::footprint(const Vec3& p) const {
 
 float CacheEngine::aForLevel(int level) const { return params_.a * std::pow(params_.secondaryAScale, float(level)); }
 
-int CacheEngine::technique(const ShadePoint& sp) const {
-  if (!sp.active || sp.hit.bsdf < 0) return 0;
-  const int t = planTech_[static_cast<size_t>(sp.hit.bsdf)];
-  if (t == 1) {
-    if (sp.wo.z <= 0.0f) return 0;  // back of a one-sided BSDF: black
-    if (sp.level >= params_.cacheDepth) return 2;
+Technique CacheEngine::technique(const ShadePoint& sp) const {
+  if (!sp.active || sp.hit.bsdf < 0) return Technique::None;
+  const Technique t = planTech_[static_cast<size_t>(sp.hit.bsdf)];
+  if (isCached(t)) {
+    if (sp.wo.z <= 0.0f) return Technique::None;  // back of a one-sided BSDF: black
+    if (sp.level >= params_.cacheDepth) return Technique::ImportanceSampling;
   }
   return t;
 }
@@ -81,7 +76,9 @@ bool CacheEngine::hasIndirect(const ShadePoint& sp) const {
   return !(maxDepth_ >= 0 && sp.depth + 2 > maxDepth_) && sp.depth < kHardDepthLimit;
 }
 
-bool CacheEngine::continuesPath(const ShadePoint& sp) const { return hasIndirect(sp) && technique(sp) == 2; }
+bool CacheEngine::continuesPath(const ShadePoint& sp) const {
+  return hasIndirect(sp) && technique(sp) == Technique::ImportanceSampling;
+}
 
 CacheKey CacheEngine::keyFor(const ShadePoint& sp) const {
   CacheKey k;
@@ -130,14 +127,14 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
   if (aov) aov->assign(pts.size(), LookupAov{});
   // Classify in parallel (technique and cache key per point), then group serially over the few
   // distinct keys in point order: millions of record-ray hits pass through here in the fill.
-  std::vector<int8_t> tech(pts.size(), 0);
+  std::vector<Technique> tech(pts.size(), Technique::None);
   std::vector<CacheKey> keys(pts.size());
   parallelFor(pts.size(), 4096, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& sp = pts[i];
       if (!hasIndirect(sp)) continue;
-      tech[i] = static_cast<int8_t>(technique(sp));
-      if (tech[i] == 1) keys[i] = keyFor(sp);
+      tech[i] = technique(sp);
+      if (isCached(tech[i])) keys[i] = keyFor(sp);
     }
   });
   std::map<CacheKey, std::vector<size_t>> groups;
@@ -146,8 +143,8 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
     CacheKey lastKey{};
     std::vector<size_t>* last = nullptr;
     for (size_t i = 0; i < pts.size(); ++i) {
-      if (tech[i] == 2) sampled.push_back(i);
-      if (tech[i] != 1) continue;
+      if (tech[i] == Technique::ImportanceSampling) sampled.push_back(i);
+      if (!isCached(tech[i])) continue;
       if (!last || keys[i] < lastKey || lastKey < keys[i]) {
         last = &groups[keys[i]];
         lastKey = keys[i];
@@ -201,7 +198,7 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
 void CacheEngine::fill(const std::vector<ShadePoint>& pts, const std::vector<float>& baseLum, bool adaptive) {
   std::map<CacheKey, std::vector<size_t>> groups;
   for (size_t i = 0; i < pts.size(); ++i)
-    if (technique(pts[i]) == 1 && (maxDepth_ < 0 || pts[i].depth + 2 <= maxDepth_)) groups[keyFor(pts[i])].push_back(i);
+    if (isCached(technique(pts[i])) && (maxDepth_ < 0 || pts[i].depth + 2 <= maxDepth_)) groups[keyFor(pts[i])].push_back(i);
   for (auto& [key, idx] : groups) {
     std::vector<ShadePoint> sub(idx.size());
     std::vector<float> lum(idx.size(), 0.0f);
@@ -273,9 +270,9 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
     if (uncovered.empty()) {
       if (adaptive && params_.adaptive && baseLum && adaptiveRounds < 4) {
         ++adaptiveRounds;
-        const auto t0 = Clock::now();
+        const auto t0 = SteadyClock::now();
         const bool changed = adaptiveCheck(key, pts, lookups, *baseLum);
-        stats_.adaptive_s += since(t0);
+        stats_.adaptive_s += secondsSince(t0);
         if (changed) {
           // Shrunk records may uncover points and change the weights of others: look up all again.
           todo.resize(n);
@@ -388,9 +385,9 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
     }
   });
   ProjectResult pr;
-  auto t0 = Clock::now();
+  auto t0 = SteadyClock::now();
   ctx_.backend->project(pb, pr);
-  stats_.projection_s += since(t0);
+  stats_.projection_s += secondsSince(t0);
   const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
   if (!params_.gradients) {
     pr.gradT.assign(K * B, 0.0f);
@@ -444,35 +441,14 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
     infos[b].a = aForLevel(key.level);
     if (key.level == 0 && cands[b].pixel >= 0) recordPixels_.push_back(cands[b].pixel);
   }
-  std::vector<float> lw, tw, bw;
+  WorldCopies world;
   if (params_.worldFrame) {
-    // World-aligned copies (DESIGN §3): f_world(ω) = f_local(Fω) = f_local(R⁻¹ω) with R = Fᵀ,
-    // i.e. R's columns are the record's axes t, b, n.
-    RotateBatch rb;
-    rb.order = key.order;
-    rb.count = 3 * B;
-    rb.rotations.resize(9 * static_cast<size_t>(rb.count));
-    rb.coeffs.resize(K * rb.count);
-    for (int part = 0; part < 3; ++part)
-      for (int b = 0; b < B; ++b) {
-        const Frame& f = infos[b].frame;
-        float* R = &rb.rotations[9 * (static_cast<size_t>(part) * B + b)];
-        const Vec3 cols[3] = {f.t, f.b, f.n};
-        for (int r = 0; r < 3; ++r)
-          for (int c = 0; c < 3; ++c) R[3 * r + c] = cols[c][r];
-        const std::vector<float>& src = part == 0 ? pr.lambda : part == 1 ? pr.gradT : pr.gradB;
-        std::copy(src.begin() + K * b, src.begin() + K * (b + 1), rb.coeffs.begin() + K * (static_cast<size_t>(part) * B + b));
-      }
-    std::vector<float> rotated;
-    t0 = Clock::now();
-    ctx_.backend->rotate(rb, rotated);
-    stats_.projection_s += since(t0);
-    lw.assign(rotated.begin(), rotated.begin() + K * B);
-    tw.assign(rotated.begin() + K * B, rotated.begin() + 2 * K * B);
-    bw.assign(rotated.begin() + 2 * K * B, rotated.end());
+    t0 = SteadyClock::now();
+    world = rotateToWorld(*ctx_.backend, key.order, infos, pr.lambda, pr.gradT, pr.gradB);
+    stats_.projection_s += secondsSince(t0);
   }
   std::vector<uint32_t> shrunk;
-  cache.insert(std::move(infos), pr.lambda, pr.gradT, pr.gradB, lw, tw, bw, true, &shrunk);
+  cache.insert(std::move(infos), pr.lambda, pr.gradT, pr.gradB, world.lambda, world.gradT, world.gradB, true, &shrunk);
   recordCounter_ += static_cast<uint64_t>(B);
   return shrunk;
 }
@@ -487,7 +463,7 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
   // Everything else goes through the kernels below.
   if (!params_.tlMode && key.order == 3) {
     std::vector<char> lambertian(pts.size(), 0);
-    const auto t0 = Clock::now();
+    const auto t0 = SteadyClock::now();
     parallelFor(pts.size(), 256, [&](size_t b, size_t e) {
       const RadianceCache::Reader reader = cache.reader();
       uint64_t contributions = 0, count = 0;
@@ -505,7 +481,7 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
       stats_.contributions += contributions;
       stats_.lambertianLookups += count;
     });
-    stats_.interpolation_s += since(t0);
+    stats_.interpolation_s += secondsSince(t0);
     std::vector<size_t> rest;
     for (size_t i = 0; i < pts.size(); ++i)
       if (!lambertian[i]) rest.push_back(i);
@@ -571,9 +547,9 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
       remap[used[r]] = -1;
     }
     std::vector<float> part;
-    const auto t0 = Clock::now();
+    const auto t0 = SteadyClock::now();
     ctx_.backend->interpolate(ib, part);
-    stats_.interpolation_s += since(t0);
+    stats_.interpolation_s += secondsSince(t0);
     for (size_t j = 0; j < idx.size(); ++j)
       std::copy(part.begin() + K * j, part.begin() + K * (j + 1), lambda.begin() + K * idx[j]);
   };
@@ -602,7 +578,7 @@ void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, 
   const size_t n2 = static_cast<size_t>(order) * order;
   auto point = [&](size_t j) -> const ShadePoint& { return pts[outIndex ? (*outIndex)[j] : begin + j]; };
   auto slot = [&](size_t j) -> Color& { return out[outIndex ? j : begin + j]; };
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   if (params_.tlMode) {
     // Tabellion–Lamorlette 2004: the record's irradiance as if it all came from the dominant
     // direction. E = ∫ L cos from the zonal clamped-cosine coefficients (√π/2, √(π/3), √(5π)/8);
@@ -628,7 +604,7 @@ void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, 
         slot(j) = isFinite(Lo) ? Lo : Color(0.0f);
       }
     });
-    stats_.dot_s += since(t0);
+    stats_.dot_s += secondsSince(t0);
     return;
   }
   BrdfDotBatch db;
@@ -651,7 +627,7 @@ void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, 
     const Color Lo = glm::max(Color(res[3 * j], res[3 * j + 1], res[3 * j + 2]), Color(0.0f));
     slot(j) = isFinite(Lo) ? Lo : Color(0.0f);
   }
-  stats_.dot_s += since(t0);
+  stats_.dot_s += secondsSince(t0);
 }
 
 bool CacheEngine::adaptiveCheck(const CacheKey& key, const std::vector<ShadePoint>& pts,
@@ -701,9 +677,9 @@ bool CacheEngine::adaptiveCheck(const CacheKey& key, const std::vector<ShadePoin
       ib.offsets[j + 1] = static_cast<int32_t>(j + 1);
     }
     std::vector<float> lambda;
-    auto t0 = Clock::now();
+    auto t0 = SteadyClock::now();
     ctx_.backend->interpolate(ib, lambda);
-    stats_.interpolation_s += since(t0);
+    stats_.interpolation_s += secondsSince(t0);
     std::vector<size_t> idx(pairPoint.begin() + begin, pairPoint.begin() + begin + count);
     std::vector<Color> part(count);
     shadeLambda(pts, 0, count, key.order, lambda, part, &idx);

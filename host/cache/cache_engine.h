@@ -75,20 +75,24 @@ class CacheEngine {
     const bool two = hit.valid() && hit.bsdf >= 0 && twoSided_[static_cast<size_t>(hit.bsdf)];
     return makeShadePoint(hit, dir, depth, level, seed, two);
   }
-  // Technique of a point's material: 0 none, 1 cache, 2 BSDF sampling.
-  int technique(const ShadePoint& sp) const;
-  // Whether indirect() continues a path from sp by BSDF sampling (technique 2 within the depth
-  // limits). Such a point takes only the light half of its direct light (lightStrategyMis): the
+  // Technique of a point: its material's (irradiance/radiance cache, importance sampling), None
+  // for points without indirect light, and importance sampling for cached materials past
+  // cache_depth.
+  Technique technique(const ShadePoint& sp) const;
+  // Whether indirect() continues a path from sp by BSDF sampling (importance sampling within the
+  // depth limits). Such a point takes only the light half of its direct light (lightStrategyMis): the
   // continuation ray is also its MIS BSDF sample and adds the emitter it hits, as in the path
   // tracer, so one ray serves both.
   bool continuesPath(const ShadePoint& sp) const;
   // Whether indirect() gives sp any indirect light at all (max_depth and the hard depth limit).
   bool hasIndirect(const ShadePoint& sp) const;
   CacheKey keyFor(const ShadePoint& sp) const;
+  int maxDepth() const { return maxDepth_; }
 
   std::map<CacheKey, std::unique_ptr<RadianceCache>>& caches() { return caches_; }
   RadianceCache& cacheFor(const CacheKey& key);
   EngineStats& stats() { return stats_; }
+  const EngineStats& stats() const { return stats_; }
   // Pixels whose primary hit created a record (AOV "records").
   std::vector<int> recordPixels() const { return recordPixels_; }
   float footprint(const Vec3& p) const;
@@ -101,7 +105,7 @@ class CacheEngine {
   const CameraModel& camera_;
   int maxDepth_, rrDepth_;
   Vec3 lo_, hi_;
-  std::vector<int> planTech_;   // per bsdf: 0 none, 1 cache, 2 sampling
+  std::vector<Technique> planTech_;  // per bsdf: a cached technique with a table, else sampling
   std::vector<int> planOrder_;  // per bsdf: record order
   std::vector<bool> twoSided_;
   std::map<CacheKey, std::unique_ptr<RadianceCache>> caches_;
