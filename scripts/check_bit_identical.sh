@@ -36,6 +36,8 @@ render aovs "$glossy" --integrator rcache --device cpu --aov records,radius,tech
 render save "$glossy" --integrator rcache --device cpu --cache-save "$work/cache.rcc"
 render load "$glossy" --integrator rcache --device cpu --cache-load "$work/cache.rcc"
 render record_frame "$glossy" --integrator rcache --device cpu -D frame=record -D mode=tl
+render adaptive_caching "$glossy" --integrator rcache --device cpu -D adaptive=true -D share_pixel=false
+render no_gradients "$root/scenes/cornell_diffuse.xml" --integrator rcache --device cpu -D gradients=false -D adaptive=true
 render path_adaptive "$glossy" --integrator path --adaptive 0.05 --max-spp 16
 if "$bin" devices 2>/dev/null | grep -q "^opencl:"; then
   render opencl "$glossy" --integrator rcache --device opencl

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "cache/record_octree.h"
+#include "cache/rng_salts.h"
 #include "cache/world_frame.h"
 #include "cl/sh_backend.h"
 #include "core/error.h"
@@ -26,6 +27,8 @@ constexpr int kHardDepthLimit = 1000;
 // A record ray's hit starts its low-discrepancy dimensions at the second pair (ShadePoint::ldDim
 // = 0 means "none"; the pairs are scrambled independently, so skipping one costs nothing).
 constexpr uint32_t kRecordLowDiscrepancyFirstDim = 2;
+// Adaptive-caching checks per ensureCoverage call: each may shrink records and uncover points.
+constexpr int kMaxAdaptiveRounds = 4;
 
 void frameRows(const Frame& f, float* out) {
   const Vec3 rows[3] = {f.t, f.b, f.n};
@@ -211,6 +214,76 @@ void CacheEngine::fill(const std::vector<ShadePoint>& pts, const std::vector<flo
   }
 }
 
+void CacheEngine::lookUp(RadianceCache& cache, const std::vector<ShadePoint>& pts, const std::vector<size_t>& todo,
+                         std::vector<Lookup>& lookups, float relaxedScale) {
+  parallelFor(todo.size(), 64, [&](size_t b, size_t e) {
+    const RadianceCache::Reader reader = cache.reader();
+    for (size_t j = b; j < e; ++j) {
+      const ShadePoint& sp = pts[todo[j]];
+      Lookup& lk = lookups[todo[j]];
+      reader.lookup(sp.hit.p, sp.frame.n, lk);
+      if (!lk.covered() && relaxedScale > 1.0f) {
+        reader.lookup(sp.hit.p, sp.frame.n, lk, relaxedScale);
+        if (lk.covered()) ++stats_.relaxedLookups;
+      }
+    }
+  });
+}
+
+// Neighbour clamping on insertion shrinks the radii of older records, which can uncover points
+// found covered in an earlier round. In the final pass (relaxedScale > 1) every point is looked up
+// again, so the image is a function of the final cache alone (what --cache-load reproduces). In
+// the fill only the points one of whose records shrank are (the others keep lookups that miss the
+// newest records, a valid interpolation of the cache as it was; re-checking all would cost a third
+// of the fill's lookups).
+std::vector<size_t> CacheEngine::pointsToRecheck(const std::vector<Lookup>& lookups, std::vector<uint32_t>& shrunk,
+                                                 float relaxedScale) {
+  const size_t n = lookups.size();
+  std::vector<size_t> todo;
+  std::sort(shrunk.begin(), shrunk.end());
+  shrunk.erase(std::unique(shrunk.begin(), shrunk.end()), shrunk.end());
+  if (relaxedScale > 1.0f) {
+    todo.resize(n);
+    for (size_t i = 0; i < n; ++i) todo[i] = i;
+  } else if (!shrunk.empty())
+    for (size_t i = 0; i < n; ++i)
+      for (const RcContribution& c : lookups[i].entries)
+        if (std::binary_search(shrunk.begin(), shrunk.end(), static_cast<uint32_t>(c.record))) {
+          todo.push_back(i);
+          break;
+        }
+  shrunk.clear();
+  return todo;
+}
+
+std::vector<ShadePoint> CacheEngine::recordCandidates(const std::vector<ShadePoint>& pts,
+                                                      std::vector<size_t> uncovered, float sepPx) const {
+  // Deterministic shuffle (by the points' seeds) so candidates spread over the batch.
+  std::sort(uncovered.begin(), uncovered.end(), [&](size_t x, size_t y) {
+    const uint64_t hx = hashMix(pts[x].seed, kSaltCandidateOrder), hy = hashMix(pts[y].seed, kSaltCandidateOrder);
+    return hx != hy ? hx < hy : x < y;
+  });
+  RecordOctree accepted(lo_, hi_);
+  std::vector<ShadePoint> cands;
+  for (size_t i : uncovered) {
+    const ShadePoint& sp = pts[i];
+    bool near = false;
+    accepted.query(sp.hit.p, [&](uint32_t id) {
+      if (near) return;
+      const ShadePoint& c = cands[id];
+      const float sep = sepPx * footprint(c.hit.p);
+      if (glm::length(c.hit.p - sp.hit.p) < sep && glm::dot(c.frame.n, sp.frame.n) > 0.5f) near = true;
+    });
+    if (near) continue;
+    accepted.insert(static_cast<uint32_t>(cands.size()), sp.hit.p, sepPx * footprint(sp.hit.p));
+    cands.push_back(sp);
+    if (static_cast<int>(cands.size()) >= params_.batch) break;
+  }
+  return cands;
+}
+
+// Rounds of: look up the points still to do; if all are covered, re-check those whose records
+// shrank and run the adaptive check; else place a batch of records at spread-out uncovered points.
 void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoint>& pts, std::vector<Lookup>& lookups,
                                  const std::vector<float>* baseLum, bool adaptive, float relaxedScale) {
   RadianceCache& cache = cacheFor(key);
@@ -225,58 +298,28 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
   int adaptiveRounds = 0;
   bool created = false;
   std::vector<uint32_t> shrunk;  // records whose radius clamping lowered since the last check
-  std::vector<size_t> todo(n);
-  for (size_t i = 0; i < n; ++i) todo[i] = i;
+  std::vector<size_t> all(n);
+  for (size_t i = 0; i < n; ++i) all[i] = i;
+  std::vector<size_t> todo = all;
   for (;;) {
-    parallelFor(todo.size(), 64, [&](size_t b, size_t e) {
-      const RadianceCache::Reader reader = cache.reader();
-      for (size_t j = b; j < e; ++j) {
-        const ShadePoint& sp = pts[todo[j]];
-        Lookup& lk = lookups[todo[j]];
-        reader.lookup(sp.hit.p, sp.frame.n, lk);
-        if (!lk.covered() && relaxedScale > 1.0f) {
-          reader.lookup(sp.hit.p, sp.frame.n, lk, relaxedScale);
-          if (lk.covered()) ++stats_.relaxedLookups;
-        }
-      }
-    });
+    lookUp(cache, pts, todo, lookups, relaxedScale);
     std::vector<size_t> uncovered;
     for (size_t i : todo)
       if (!lookups[i].covered()) uncovered.push_back(i);
     if (uncovered.empty() && created) {
-      // Neighbour clamping on insertion shrinks the radii of older records, which can uncover
-      // points found covered in an earlier round. In the final pass (relaxedScale > 1) every
-      // point is looked up again, so the image is a function of the final cache alone (what
-      // --cache-load reproduces). In the fill only the points one of whose records shrank are
-      // (the others keep lookups that miss the newest records, a valid interpolation of the
-      // cache as it was): re-checking all cost a third of the fill's lookups, fill −16 % at 512².
       created = false;
-      std::sort(shrunk.begin(), shrunk.end());
-      shrunk.erase(std::unique(shrunk.begin(), shrunk.end()), shrunk.end());
-      todo.clear();
-      if (relaxedScale > 1.0f) {
-        todo.resize(n);
-        for (size_t i = 0; i < n; ++i) todo[i] = i;
-      } else if (!shrunk.empty())
-        for (size_t i = 0; i < n; ++i)
-          for (const RcContribution& c : lookups[i].entries)
-            if (std::binary_search(shrunk.begin(), shrunk.end(), static_cast<uint32_t>(c.record))) {
-              todo.push_back(i);
-              break;
-            }
-      shrunk.clear();
+      todo = pointsToRecheck(lookups, shrunk, relaxedScale);
       if (!todo.empty()) continue;
     }
     if (uncovered.empty()) {
-      if (adaptive && params_.adaptive && baseLum && adaptiveRounds < 4) {
+      if (adaptive && params_.adaptive && baseLum && adaptiveRounds < kMaxAdaptiveRounds) {
         ++adaptiveRounds;
         const auto t0 = SteadyClock::now();
         const bool changed = adaptiveCheck(key, pts, lookups, *baseLum);
         stats_.adaptive_s += secondsSince(t0);
         if (changed) {
           // Shrunk records may uncover points and change the weights of others: look up all again.
-          todo.resize(n);
-          for (size_t i = 0; i < n; ++i) todo[i] = i;
+          todo = all;
           created = false;
           continue;
         }
@@ -284,64 +327,41 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
       break;
     }
     ++stats_.uncoveredRounds;
-    // Deterministic shuffle (by the points' seeds) so candidates spread over the batch.
-    std::sort(uncovered.begin(), uncovered.end(), [&](size_t x, size_t y) {
-      const uint64_t hx = hashMix(pts[x].seed, 0xA11CE), hy = hashMix(pts[y].seed, 0xA11CE);
-      return hx != hy ? hx < hy : x < y;
-    });
-    RecordOctree accepted(lo_, hi_);
-    std::vector<ShadePoint> cands;
-    std::vector<Vec3> candNormals;
-    for (size_t i : uncovered) {
-      const ShadePoint& sp = pts[i];
-      bool near = false;
-      accepted.query(sp.hit.p, [&](uint32_t id) {
-        if (near) return;
-        const ShadePoint& c = cands[id];
-        const float sep = sepPx * footprint(c.hit.p);
-        if (glm::length(c.hit.p - sp.hit.p) < sep && glm::dot(c.frame.n, sp.frame.n) > 0.5f) near = true;
-      });
-      if (near) continue;
-      accepted.insert(static_cast<uint32_t>(cands.size()), sp.hit.p, sepPx * footprint(sp.hit.p));
-      cands.push_back(sp);
-      if (static_cast<int>(cands.size()) >= params_.batch) break;
-    }
-    for (uint32_t id : buildRecords(key, cands)) shrunk.push_back(id);
+    for (uint32_t id : buildRecords(key, recordCandidates(pts, uncovered, sepPx))) shrunk.push_back(id);
     created = true;
     sepPx = std::max(minSepPx, 0.5f * sepPx);
     todo = uncovered;
   }
 }
 
-std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::vector<ShadePoint>& cands) {
-  if (cands.empty()) return {};
-  RadianceCache& cache = cacheFor(key);
+ProjectBatch CacheEngine::recordBatch(const CacheKey& key, const std::vector<ShadePoint>& cands) {
   const int B = static_cast<int>(cands.size());
-  int M = 0, N = 0;
-  hemisphereCells(key.level == 0 ? params_.rays : params_.secondaryRays, M, N);
-  const int S = M * N;
   ProjectBatch pb;
+  hemisphereCells(key.level == 0 ? params_.rays : params_.secondaryRays, pb.M, pb.N);
+  const int S = pb.M * pb.N;
   pb.order = key.order;
-  pb.M = M;
-  pb.N = N;
   pb.records = B;
   pb.gradients = params_.gradients;
   pb.pattern.resize(2 * static_cast<size_t>(S));
-  Rng prng(hashMix(ctx_.options.seed, recordCounter_, static_cast<uint64_t>(key.level) * 1000 + key.depth), 3);
+  Rng prng(hashMix(ctx_.options.seed, recordCounter_, static_cast<uint64_t>(key.level) * 1000 + key.depth),
+           kStreamRecordPattern);
   for (auto& v : pb.pattern) v = prng.nextFloat();
   pb.phi0.resize(B);
-  for (int b = 0; b < B; ++b) pb.phi0[b] = 2.0f * kPi * Rng(cands[b].seed, 4).nextFloat();
+  for (int b = 0; b < B; ++b) pb.phi0[b] = 2.0f * kPi * Rng(cands[b].seed, kStreamRecordAzimuth).nextFloat();
   // Smallest distance the gradient formula sees: a thousandth of a pixel footprint keeps 1/r
   // finite when geometry touches the record, yet far below any R_min.
   float minFp = INFINITY;
   for (const auto& c : cands) minFp = std::min(minFp, footprint(c.hit.p));
   pb.minDistance = std::max(1e-3f * minFp, 1e-12f);
+  return pb;
+}
 
-  // Trace the record rays (batched), then shade their hits recursively.
-  const size_t total = static_cast<size_t>(B) * S;
+void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectBatch& pb, std::vector<Hit>& hits) {
+  const int M = pb.M, N = pb.N, S = M * N;
+  const size_t total = cands.size() * S;
   std::vector<Ray> rays(total);
-  std::vector<Hit> hits(total);
-  parallelFor(static_cast<size_t>(B), 1, [&](size_t b0, size_t b1) {
+  hits.assign(total, Hit{});
+  parallelFor(cands.size(), 1, [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b) {
       const ShadePoint& c = cands[b];
       for (int j = 0; j < M; ++j)
@@ -357,16 +377,16 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
   });
   parallelFor(total, 1024, [&](size_t b, size_t e) { ctx_.accel.intersect(rays.data() + b, hits.data() + b, e - b); });
   stats_.recordRays += total;
+  // The radiance arriving along each ray: the hit's outgoing radiance, shaded recursively.
   std::vector<ShadePoint> next(total);
   parallelFor(total, 1024, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& c = cands[i / S];
-      const Hit& h = hits[i];
-      next[i] = shadePointOf(h, rays[i].d, c.depth + 1, c.level + 1, hashMix(c.seed, i % S, 0x5EED));
+      next[i] = shadePointOf(hits[i], rays[i].d, c.depth + 1, c.level + 1, hashMix(c.seed, i % S, kSaltRecordRayHit));
       // The light samples at a record's S hits are one padded Sobol sequence (index = ray): like
       // the ray directions they are stratified over the record, so the record's estimate of
       // direct light at its neighbours converges faster than with independent samples.
-      next[i].ldSeed = static_cast<uint32_t>(hashMix(c.seed, 0x1D5EED));
+      next[i].ldSeed = static_cast<uint32_t>(hashMix(c.seed, kSaltRecordLightSequence));
       next[i].ldIndex = static_cast<uint32_t>(i % S);
       next[i].ldDim = kRecordLowDiscrepancyFirstDim;
     }
@@ -375,7 +395,6 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
   radianceOut(next, L);
   next.clear();
   next.shrink_to_fit();
-
   pb.radiance.resize(total * 3);
   pb.distance.resize(total);
   parallelFor(total, 16384, [&](size_t b, size_t e) {
@@ -384,6 +403,63 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
       pb.distance[i] = hits[i].valid() ? hits[i].t : 0.0f;
     }
   });
+}
+
+RecordInfo CacheEngine::clampRecord(const CacheKey& key, const ShadePoint& cand, const Hit* hits, int S,
+                                    float minDistance, float* lambda, float* gradT, float* gradB) const {
+  RecordInfo info;
+  // Harmonic mean distance (Ward): misses count as infinitely far.
+  double inv = 0.0;
+  for (int s = 0; s < S; ++s)
+    if (hits[s].valid()) inv += 1.0 / std::max(double(hits[s].t), double(minDistance));
+  const float fp = footprint(cand.hit.p);
+  const float R = inv > 0.0 ? static_cast<float>(S / inv) : INFINITY;
+  info.p = cand.hit.p;
+  info.frame = cand.frame;
+  // Gradient limit (as Mitsuba's irrcache clamps R by E/|∇E|): over the influence radius the
+  // first-order change of the record's coefficients may not exceed their own size,
+  // ‖∇Λ‖·a·R ≤ ‖Λ‖ (norms over all coefficients and channels, so the higher bands of a glossy
+  // record are held to the same bound as its mean), so gradients near touching geometry cannot
+  // extrapolate to negative or exploding radiance.
+  float Rg = INFINITY;
+  const size_t coeffs = 3 * static_cast<size_t>(key.order) * key.order;
+  if (params_.gradients) {
+    double l2 = 0, g2 = 0;
+    for (size_t o = 0; o < coeffs; ++o) {
+      l2 += double(lambda[o]) * lambda[o];
+      g2 += double(gradT[o]) * gradT[o] + double(gradB[o]) * gradB[o];
+    }
+    if (g2 > 0) Rg = static_cast<float>(std::sqrt(l2 / g2) / aForLevel(key.level));
+  }
+  // r_min and r_max bound the influence radius a·R_i in pixel footprints (scaled like a at the
+  // coarser secondary caches): a record never covers less than r_min pixels (below that a
+  // cache only re-samples what a path tracer would, at 1000 rays a pixel) nor more than r_max.
+  const float aL = aForLevel(key.level), levelScale = aL / params_.a;
+  info.R = std::min(std::max(std::min(R, Rg), params_.rMinPx * levelScale * fp / aL), params_.rMaxPx * levelScale * fp / aL);
+  // The pixel-footprint floor r_min can push R past the gradient limit (records in corners,
+  // where R is tiny and the gradient ~Λ/R): scale the gradient down so the bound holds at the
+  // radius actually used. Without this, a record 3 px wide extrapolates a gradient meant for a
+  // sub-pixel neighbourhood and paints isolated pixels many times too bright.
+  if (info.R > Rg) {
+    const float s = Rg / info.R;
+    for (size_t o = 0; o < coeffs; ++o) {
+      gradT[o] *= s;
+      gradB[o] *= s;
+    }
+  }
+  info.a = aForLevel(key.level);
+  return info;
+}
+
+// Sample → project → clamp → insert: one batch of new records at the candidates.
+std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::vector<ShadePoint>& cands) {
+  if (cands.empty()) return {};
+  RadianceCache& cache = cacheFor(key);
+  const int B = static_cast<int>(cands.size());
+  ProjectBatch pb = recordBatch(key, cands);
+  const int S = pb.M * pb.N;
+  std::vector<Hit> hits;
+  traceRecordRays(cands, pb, hits);
   ProjectResult pr;
   auto t0 = SteadyClock::now();
   ctx_.backend->project(pb, pr);
@@ -396,49 +472,8 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
   std::vector<RecordInfo> infos(B);
   for (int b = 0; b < B; ++b) {
     stats_.droppedSamples += pr.dropped.empty() ? 0 : static_cast<uint64_t>(pr.dropped[b]);
-    // Harmonic mean distance (Ward): misses count as infinitely far.
-    double inv = 0.0;
-    for (int s = 0; s < S; ++s) {
-      const Hit& h = hits[static_cast<size_t>(b) * S + s];
-      if (h.valid()) inv += 1.0 / std::max(double(h.t), double(pb.minDistance));
-    }
-    const float fp = footprint(cands[b].hit.p);
-    const float R = inv > 0.0 ? static_cast<float>(S / inv) : INFINITY;
-    infos[b].p = cands[b].hit.p;
-    infos[b].frame = cands[b].frame;
-    // Gradient limit (as Mitsuba's irrcache clamps R by E/|∇E|): over the influence radius the
-    // first-order change of the record's coefficients may not exceed their own size,
-    // ‖∇Λ‖·a·R ≤ ‖Λ‖ (norms over all coefficients and channels, so the higher bands of a glossy
-    // record are held to the same bound as its mean), so gradients near touching geometry cannot
-    // extrapolate to negative or exploding radiance.
-    float Rg = INFINITY;
-    const size_t n2 = static_cast<size_t>(key.order) * key.order;
-    if (params_.gradients) {
-      double l2 = 0, g2 = 0;
-      for (size_t o = K * b; o < K * b + 3 * n2; ++o) {
-        l2 += double(pr.lambda[o]) * pr.lambda[o];
-        g2 += double(pr.gradT[o]) * pr.gradT[o] + double(pr.gradB[o]) * pr.gradB[o];
-      }
-      if (g2 > 0) Rg = static_cast<float>(std::sqrt(l2 / g2) / aForLevel(key.level));
-    }
-    // r_min and r_max bound the influence radius a·R_i in pixel footprints (scaled like a at the
-    // coarser secondary caches): a record never covers less than r_min pixels (below that a
-    // cache only re-samples what a path tracer would, at 1000 rays a pixel) nor more than r_max.
-    const float aL = aForLevel(key.level), levelScale = aL / params_.a;
-    infos[b].R = std::min(std::max(std::min(R, Rg), params_.rMinPx * levelScale * fp / aL),
-                          params_.rMaxPx * levelScale * fp / aL);
-    // The pixel-footprint floor r_min can push R past the gradient limit (records in corners,
-    // where R is tiny and the gradient ~Λ/R): scale the gradient down so the bound holds at the
-    // radius actually used. Without this, a record 3 px wide extrapolates a gradient meant for a
-    // sub-pixel neighbourhood and paints isolated pixels many times too bright.
-    if (infos[b].R > Rg) {
-      const float s = Rg / infos[b].R;
-      for (size_t o = K * b; o < K * b + 3 * n2; ++o) {
-        pr.gradT[o] *= s;
-        pr.gradB[o] *= s;
-      }
-    }
-    infos[b].a = aForLevel(key.level);
+    infos[b] = clampRecord(key, cands[b], &hits[static_cast<size_t>(b) * S], S, pb.minDistance, &pr.lambda[K * b],
+                           &pr.gradT[K * b], &pr.gradB[K * b]);
     if (key.level == 0 && cands[b].pixel >= 0) recordPixels_.push_back(cands[b].pixel);
   }
   WorldCopies world;
@@ -509,13 +544,7 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
   // position in the chunk.
   auto interpolate = [&](size_t begin, const std::vector<uint32_t>& idx, bool world, std::vector<float>& lambda) {
     if (idx.empty()) return;
-    InterpolateBatch ib;
-    ib.order = key.order;
-    ib.worldFrame = world;
-    ib.gradients = params_.gradients;
-    ib.points = static_cast<int>(idx.size());
-    ib.pointFrames.resize(9 * idx.size());
-    ib.offsets.resize(idx.size() + 1, 0);
+    InterpolateBatch ib = interpolateBatch(key.order, world, idx.size());
     std::vector<uint32_t> used;
     for (size_t j = 0; j < idx.size(); ++j) {
       const Lookup& lk = lookups[begin + idx[j]];
@@ -533,19 +562,8 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
       stats_.lookups += 1;
       stats_.contributions += lk.entries.size();
     }
-    ib.records = static_cast<int>(used.size());
-    ib.lambda.resize(K * used.size());
-    if (ib.gradients) {
-      ib.gradT.resize(K * used.size());
-      ib.gradB.resize(K * used.size());
-    }
-    if (!world) ib.recordFrames.resize(9 * used.size());
-    for (size_t r = 0; r < used.size(); ++r) {
-      cache.copyCoefficients(used[r], world, &ib.lambda[K * r], ib.gradients ? &ib.gradT[K * r] : nullptr,
-                             ib.gradients ? &ib.gradB[K * r] : nullptr);
-      if (!world) frameRows(cache.info(used[r]).frame, &ib.recordFrames[9 * r]);
-      remap[used[r]] = -1;
-    }
+    addRecords(cache, used, ib);
+    for (uint32_t r : used) remap[r] = -1;
     std::vector<float> part;
     const auto t0 = SteadyClock::now();
     ctx_.backend->interpolate(ib, part);
@@ -630,52 +648,56 @@ void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, 
   stats_.dot_s += secondsSince(t0);
 }
 
-bool CacheEngine::adaptiveCheck(const CacheKey& key, const std::vector<ShadePoint>& pts,
-                                const std::vector<Lookup>& lookups, const std::vector<float>& baseLum) {
-  // EGSR 2006: at a point covered by several records, each record's own prediction (its Λ moved
-  // by its gradient, rotated, dotted with the BRDF) should agree; a disagreement above the Weber
-  // threshold would show as a visible seam, so the most deviant record gets a smaller a_i.
-  RadianceCache& cache = cacheFor(key);
+InterpolateBatch CacheEngine::interpolateBatch(int order, bool world, size_t points) const {
+  InterpolateBatch ib;
+  ib.order = order;
+  ib.worldFrame = world;
+  ib.gradients = params_.gradients;
+  ib.points = static_cast<int>(points);
+  ib.pointFrames.resize(9 * points);
+  ib.offsets.resize(points + 1, 0);
+  return ib;
+}
+
+void CacheEngine::addRecords(const RadianceCache& cache, const std::vector<uint32_t>& ids, InterpolateBatch& ib) const {
   const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
-  const bool world = params_.worldFrame;
-  std::vector<size_t> pairPoint;
-  std::vector<RcContribution> pairEntry;
-  for (size_t i = 0; i < pts.size(); ++i)
-    if (lookups[i].entries.size() >= 2)
-      for (const auto& e : lookups[i].entries) {
-        pairPoint.push_back(i);
-        pairEntry.push_back(e);
-      }
-  if (pairPoint.empty()) return false;
+  const bool world = ib.worldFrame;
+  ib.records = static_cast<int>(ids.size());
+  ib.lambda.resize(K * ids.size());
+  if (ib.gradients) {
+    ib.gradT.resize(K * ids.size());
+    ib.gradB.resize(K * ids.size());
+  }
+  if (!world) ib.recordFrames.resize(9 * ids.size());
+  for (size_t r = 0; r < ids.size(); ++r) {
+    cache.copyCoefficients(ids[r], world, &ib.lambda[K * r], ib.gradients ? &ib.gradT[K * r] : nullptr,
+                           ib.gradients ? &ib.gradB[K * r] : nullptr);
+    if (!world) frameRows(cache.info(ids[r]).frame, &ib.recordFrames[9 * r]);
+  }
+}
+
+// Each contribution (point i, record) of the points covered by two or more records, as the
+// record alone predicts the point's outgoing radiance (its Λ moved by its gradient, rotated,
+// dotted with the BRDF).
+std::vector<Color> CacheEngine::recordPredictions(const CacheKey& key, const std::vector<ShadePoint>& pts,
+                                                  const std::vector<size_t>& pairPoint,
+                                                  const std::vector<RcContribution>& pairEntry) {
+  RadianceCache& cache = cacheFor(key);
   std::vector<Color> pred(pairPoint.size());
   for (size_t begin = 0; begin < pairPoint.size(); begin += kChunk) {
     const size_t count = std::min(kChunk, pairPoint.size() - begin);
-    InterpolateBatch ib;
-    ib.order = key.order;
-    ib.worldFrame = world;
-    ib.gradients = params_.gradients;
-    ib.points = static_cast<int>(count);
-    ib.records = static_cast<int>(count);
-    ib.pointFrames.resize(9 * count);
-    ib.offsets.resize(count + 1);
-    ib.lambda.resize(K * count);
-    if (ib.gradients) {
-      ib.gradT.resize(K * count);
-      ib.gradB.resize(K * count);
-    }
-    if (!world) ib.recordFrames.resize(9 * count);
+    InterpolateBatch ib = interpolateBatch(key.order, params_.worldFrame, count);
+    std::vector<uint32_t> ids(count);
     for (size_t j = 0; j < count; ++j) {
       RcContribution c = pairEntry[begin + j];
-      const uint32_t id = static_cast<uint32_t>(c.record);
+      ids[j] = static_cast<uint32_t>(c.record);
       frameRows(pts[pairPoint[begin + j]].frame, &ib.pointFrames[9 * j]);
-      cache.copyCoefficients(id, world, &ib.lambda[K * j], ib.gradients ? &ib.gradT[K * j] : nullptr,
-                             ib.gradients ? &ib.gradB[K * j] : nullptr);
-      if (!world) frameRows(cache.info(id).frame, &ib.recordFrames[9 * j]);
       c.record = static_cast<int>(j);
       c.weight = 1.0f;
       ib.entries.push_back(c);
       ib.offsets[j + 1] = static_cast<int32_t>(j + 1);
     }
+    addRecords(cache, ids, ib);
     std::vector<float> lambda;
     auto t0 = SteadyClock::now();
     ctx_.backend->interpolate(ib, lambda);
@@ -685,7 +707,25 @@ bool CacheEngine::adaptiveCheck(const CacheKey& key, const std::vector<ShadePoin
     shadeLambda(pts, 0, count, key.order, lambda, part, &idx);
     std::copy(part.begin(), part.end(), pred.begin() + begin);
   }
-  std::map<uint32_t, float> shrink;
+  return pred;
+}
+
+// EGSR 2006: at a point covered by several records, each record's own prediction should agree; a
+// disagreement above the Weber threshold would show as a visible seam, so the most deviant record
+// gets a smaller a_i.
+bool CacheEngine::adaptiveCheck(const CacheKey& key, const std::vector<ShadePoint>& pts,
+                                const std::vector<Lookup>& lookups, const std::vector<float>& baseLum) {
+  std::vector<size_t> pairPoint;
+  std::vector<RcContribution> pairEntry;
+  for (size_t i = 0; i < pts.size(); ++i)
+    if (lookups[i].entries.size() >= 2)
+      for (const auto& e : lookups[i].entries) {
+        pairPoint.push_back(i);
+        pairEntry.push_back(e);
+      }
+  if (pairPoint.empty()) return false;
+  const std::vector<Color> pred = recordPredictions(key, pts, pairPoint, pairEntry);
+  std::map<uint32_t, float> shrink;  // record → the a_i that excludes the points it disagrees at
   for (size_t q = 0; q < pairPoint.size();) {
     const size_t i = pairPoint[q];
     size_t end = q;
@@ -716,6 +756,11 @@ bool CacheEngine::adaptiveCheck(const CacheKey& key, const std::vector<ShadePoin
     }
     q = end;
   }
+  return shrinkRecords(key, shrink);
+}
+
+bool CacheEngine::shrinkRecords(const CacheKey& key, const std::map<uint32_t, float>& shrink) {
+  RadianceCache& cache = cacheFor(key);
   bool changed = false;
   const float aL = aForLevel(key.level), aMin = aL * params_.minAScale, levelScale = aL / params_.a;
   for (const auto& [id, newA] : shrink) {

@@ -115,8 +115,24 @@ class CacheEngine {
 
   void ensureCoverage(const CacheKey& key, const std::vector<ShadePoint>& pts, std::vector<Lookup>& lookups,
                       const std::vector<float>* baseLum, bool adaptive, float relaxedScale = 1.0f);
+  // The steps of ensureCoverage: look up points `todo`; which points to look up again after
+  // insertions shrank records; which uncovered points become the next batch's candidates.
+  void lookUp(RadianceCache& cache, const std::vector<ShadePoint>& pts, const std::vector<size_t>& todo,
+              std::vector<Lookup>& lookups, float relaxedScale);
+  std::vector<size_t> pointsToRecheck(const std::vector<Lookup>& lookups, std::vector<uint32_t>& shrunk,
+                                      float relaxedScale);
+  std::vector<ShadePoint> recordCandidates(const std::vector<ShadePoint>& pts, std::vector<size_t> uncovered,
+                                           float sepPx) const;
   // Returns the ids of older records whose radius the new ones' neighbour clamping lowered.
   std::vector<uint32_t> buildRecords(const CacheKey& key, const std::vector<ShadePoint>& cands);
+  // The steps of buildRecords: the projection batch of the candidates (stratified ray pattern,
+  // per-record azimuth), their rays traced and shaded into it, one record's radius clamped.
+  ProjectBatch recordBatch(const CacheKey& key, const std::vector<ShadePoint>& cands);
+  void traceRecordRays(const std::vector<ShadePoint>& cands, ProjectBatch& pb, std::vector<Hit>& hits);
+  // R_i from the harmonic mean distance of its S ray hits, bounded by the gradient limit and
+  // r_min/r_max; scales the record's gradients (in place) when r_min overrides the limit.
+  RecordInfo clampRecord(const CacheKey& key, const ShadePoint& cand, const Hit* hits, int S, float minDistance,
+                         float* lambda, float* gradT, float* gradB) const;
   void interpolateAndShade(const CacheKey& key, const std::vector<ShadePoint>& pts, const std::vector<Lookup>& lookups,
                            std::vector<Color>& out);
   // The batched path of interpolateAndShade: interpolate and brdf_dot kernels.
@@ -124,6 +140,14 @@ class CacheEngine {
                               const std::vector<Lookup>& lookups, std::vector<Color>& out);
   bool adaptiveCheck(const CacheKey& key, const std::vector<ShadePoint>& pts, const std::vector<Lookup>& lookups,
                      const std::vector<float>& baseLum);
+  std::vector<Color> recordPredictions(const CacheKey& key, const std::vector<ShadePoint>& pts,
+                                       const std::vector<size_t>& pairPoint, const std::vector<RcContribution>& pairEntry);
+  // Lowers a_i of records (id → new a_i) within their floors; true when any changed.
+  bool shrinkRecords(const CacheKey& key, const std::map<uint32_t, float>& shrink);
+  // An interpolate batch's header for `points` points (frames and offsets sized, zero) and the
+  // coefficients (and, in record-frame mode, frames) of records `ids` of `cache`.
+  InterpolateBatch interpolateBatch(int order, bool world, size_t points) const;
+  void addRecords(const RadianceCache& cache, const std::vector<uint32_t>& ids, InterpolateBatch& ib) const;
   void continuePaths(const std::vector<ShadePoint>& pts, std::vector<Color>& out, float relaxedScale);
   void shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, size_t count, int order,
                    const std::vector<float>& lambda, std::vector<Color>& out, const std::vector<size_t>* outIndex);

@@ -16,6 +16,8 @@ constexpr uint64_t kSaltFinalSample = 0xF1A1000000ULL;
 constexpr uint64_t kSaltRecordRayHit = 0x5EED;
 // Scramble seed of the padded Sobol sequence shared by a record's ray hits.
 constexpr uint64_t kSaltRecordLightSequence = 0x1D5EED;
+// Order in which uncovered points are considered as record candidates (a deterministic shuffle).
+constexpr uint64_t kSaltCandidateOrder = 0xA11CE;
 // Rng stream ids: the direct light a fill point's Weber threshold is relative to, the stratified
 // pattern of a record batch's rays, and a record's azimuth rotation φ0.
 constexpr uint64_t kStreamFillDirectLight = 1;
