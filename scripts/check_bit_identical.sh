@@ -38,6 +38,7 @@ render load "$glossy" --integrator rcache --device cpu --cache-load "$work/cache
 render record_frame "$glossy" --integrator rcache --device cpu -D frame=record -D mode=tl
 render adaptive_caching "$glossy" --integrator rcache --device cpu -D adaptive=true -D share_pixel=false
 render no_gradients "$root/scenes/cornell_diffuse.xml" --integrator rcache --device cpu -D gradients=false -D adaptive=true
+RC_CACHE_DIR="$work/fresh_tables" render fresh_tables "$glossy" --integrator rcache --device cpu  # tables built, not loaded
 render path_adaptive "$glossy" --integrator path --adaptive 0.05 --max-spp 16
 if "$bin" devices 2>/dev/null | grep -q "^opencl:"; then
   render opencl "$glossy" --integrator rcache --device opencl

@@ -11,6 +11,7 @@
 // isotropic BSDFs, 2-D parabolic for anisotropic ones. Tables and order choices are cached on
 // disk (brdf/table_cache.h). No cached material in the scene → nothing is built.
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,8 @@ struct BrdfTableOptions {
   std::function<void(const std::string&)> notice;
 };
 
+struct BrdfDiskTables;  // the disk cache of plans and tables (material_plan.cpp)
+
 class BrdfTableSet {
  public:
   BrdfTableSet() = default;
@@ -86,7 +89,13 @@ class BrdfTableSet {
   double totalMs() const;
   std::string cacheDirectory() const { return cacheDir_; }  // "" when the disk cache was not used
 
+  // What a material needs: sampling only, an irradiance (diffuse) or a radiance (glossy) cache.
+  enum class Kind { Sampled, Diffuse, Glossy };
+
  private:
+  // One material's plan, adding its table unless an equal one (tableByKey) exists.
+  MaterialPlan planMaterial(const Bsdf& bsdf, Kind kind, const BrdfTableOptions& opt, const BrdfDiskTables& disk,
+                            std::map<std::string, int>& tableByKey);
   std::vector<MaterialPlan> plans_;
   std::vector<RcBrdfTable> tables_;
   std::vector<float> data_;
