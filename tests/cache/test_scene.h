@@ -8,6 +8,7 @@
 #include "bsdf/bsdf_factory.h"
 #include "cache/rcache_integrator.h"
 #include "cl/sh_backend.h"
+#include "common/property_builders.h"
 #include "core/properties.h"
 #include "geometry/accel.h"
 #include "render/integrator.h"
@@ -16,25 +17,6 @@
 #include "scene/scene.h"
 
 namespace rc::test {
-
-inline Property rgbProp(float r, float g, float b) {
-  Property p;
-  p.type = Property::Type::Rgb;
-  p.vec = Vec3(r, g, b);
-  return p;
-}
-inline Property floatProp(float v) {
-  Property p;
-  p.type = Property::Type::Float;
-  p.number = v;
-  return p;
-}
-inline Property stringProp(const std::string& s) {
-  Property p;
-  p.type = Property::Type::String;
-  p.text = s;
-  return p;
-}
 
 inline BsdfPtr diffuse(float r, float g, float b) {
   Properties props;
