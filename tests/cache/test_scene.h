@@ -14,6 +14,7 @@
 #include "render/integrator.h"
 #include "render/light_sampler.h"
 #include "render/path_integrator.h"
+#include "scene/param_reader.h"
 #include "scene/scene.h"
 
 namespace rc::test {
@@ -110,7 +111,7 @@ inline RenderResult renderScene(const Scene& scene, const IntegratorSettings& se
 inline IntegratorSettings rcacheSettings(const Scene& s, std::map<std::string, std::string> params = {}) {
   IntegratorSettings is = s.integrator;
   is.type = "rcache";
-  is.params = params;
+  for (const auto& [name, value] : params) is.props.set(name, textProperty(value));
   return is;
 }
 inline IntegratorSettings pathSettings(const Scene& s) {
