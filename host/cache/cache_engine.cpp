@@ -577,7 +577,7 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
     for (size_t j = 0; j < count; ++j) {
       // frame=auto: where every contributing record lies in the point's tangent plane (all of a
       // flat wall) the per-record path costs at most an O(n²) z-rotation per record, the world
-      // path a full O(n³) rotation per point; both give the same Λ to float precision (DESIGN §3).
+      // path a full O(n³) rotation per point; both give the same Λ to float precision (ARCHITECTURE.md §Kernels).
       // The lookup tells (Lookup::sameNormal; contributions have n·n_i > 0).
       const bool record = params_.autoFrame ? lookups[begin + j].sameNormal : !params_.worldFrame;
       (record ? recordIdx : worldIdx).push_back(static_cast<uint32_t>(j));

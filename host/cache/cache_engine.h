@@ -1,5 +1,5 @@
 #pragma once
-// The radiance-caching engine (DESIGN §1): GetOutRadiance of the course notes, batched.
+// The radiance-caching engine (ARCHITECTURE.md §Pipeline): GetOutRadiance of the course notes, batched.
 //   radianceOut(points)  = direct light (render/direct_light.h, the path tracer's estimator) +
 //                          indirect(points)                       [emission of the points excluded]
 //   indirect(points)     = cached materials: ensure the cache covers the points (new records are
