@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -20,6 +19,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/timing.h"
 #include "geometry/accel.h"
 #include "image/image_file.h"
 #include "image/oiio_module.h"
@@ -38,9 +38,6 @@ extern "C" void onInterrupt(int) {
   // Second Ctrl-C: the user insists, leave immediately.
   if (gCancel.exchange(true)) std::_Exit(130);
 }
-
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 std::string defaultOutputPath(const std::string& scenePath) {
   const size_t slash = scenePath.find_last_of('/');
@@ -91,7 +88,7 @@ int runRender(const std::vector<std::string>& args) {
     }
 
   RenderStats stats;
-  const auto tStart = Clock::now();
+  const auto tStart = SteadyClock::now();
   LoadOptions lo;
   lo.defines = ra.defines;
   lo.lenient = ra.lenient;
@@ -100,7 +97,7 @@ int runRender(const std::vector<std::string>& args) {
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
   const double loadS = secondsSince(tStart);
 
-  const auto tBvh = Clock::now();
+  const auto tBvh = SteadyClock::now();
   Accel accel(scene);
   LightSampler lights(scene);
   const double bvhS = secondsSince(tBvh);
@@ -139,13 +136,13 @@ int runRender(const std::vector<std::string>& args) {
                     [&bar](const std::string& phase, double done, double total) { bar.update(phase, done, total); }};
 
   std::signal(SIGINT, onInterrupt);
-  const auto tRender = Clock::now();
+  const auto tRender = SteadyClock::now();
   Image image = integrator->render(ctx, stats);
   const double renderS = secondsSince(tRender);
   std::signal(SIGINT, SIG_DFL);
   bar.finish();
 
-  const auto tWrite = Clock::now();
+  const auto tWrite = SteadyClock::now();
   writeImage(image, output);
   const double writeS = secondsSince(tWrite);
 
