@@ -75,6 +75,21 @@ std::string chooseIntegrator(const std::string& requested, const Scene& scene) {
   return scene.integrator.type;
 }
 
+// The integrator to render with (--integrator, else the file's), with the -D names that are its
+// parameters applied: they override the file; other names are scene parameters only, as in Mitsuba.
+std::unique_ptr<Integrator> integratorFor(const RenderArgs& ra, const Scene& scene, const IntegratorEntry*& entry) {
+  IntegratorSettings settings = scene.integrator;
+  settings.type = chooseIntegrator(ra.integrator, scene);
+  const std::vector<std::string> paramNames = integratorParameterNames(settings.type);
+  for (const auto& kv : ra.defines)
+    if (std::find(paramNames.begin(), paramNames.end(), kv.first) != paramNames.end())
+      settings.props.set(kv.first, textProperty(kv.second));
+  std::vector<std::string> warnings;
+  auto integrator = makeIntegrator(settings, ra.lenient, settings.type == scene.integrator.type, &warnings, &entry);
+  for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+  return integrator;
+}
+
 int runRender(const std::vector<std::string>& args) {
   RenderArgs ra = parseRenderArgs(args);
   if (ra.threads > 0) setThreadCount(ra.threads);
@@ -95,6 +110,8 @@ int runRender(const std::vector<std::string>& args) {
   std::vector<std::string> warnings;
   Scene scene = loadScene(ra.scenePath, lo, &warnings);
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+  const IntegratorEntry* entry = nullptr;
+  std::unique_ptr<Integrator> integrator = integratorFor(ra, scene, entry);
   const double loadS = secondsSince(tStart);
 
   const auto tBvh = SteadyClock::now();
@@ -102,19 +119,6 @@ int runRender(const std::vector<std::string>& args) {
   LightSampler lights(scene);
   const double bvhS = secondsSince(tBvh);
 
-  IntegratorSettings settings = scene.integrator;
-  settings.type = chooseIntegrator(ra.integrator, scene);
-  // -D also reaches the integrator's own parameters (a, rays, max_depth, ...), overriding the
-  // file; other names are scene parameters only, as in Mitsuba.
-  const std::vector<std::string> paramNames = integratorParameterNames(settings.type);
-  for (const auto& kv : ra.defines)
-    if (std::find(paramNames.begin(), paramNames.end(), kv.first) != paramNames.end())
-      settings.props.set(kv.first, textProperty(kv.second));
-  const IntegratorEntry* entry = nullptr;
-  warnings.clear();
-  std::unique_ptr<Integrator> integrator =
-      makeIntegrator(settings, ra.lenient, settings.type == scene.integrator.type, &warnings, &entry);
-  for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
   std::unique_ptr<ShBackend> backend;
   if (entry->usesKernels) {
     std::string notice;

@@ -12,6 +12,7 @@
 #include "core/rng.h"
 #include "core/timing.h"
 #include "render/direct_light.h"
+#include "scene/integrator_params.h"
 #include "sh/sh_basis.h"
 
 namespace rc {
@@ -76,7 +77,7 @@ Technique CacheEngine::technique(const ShadePoint& sp) const {
 }
 
 bool CacheEngine::hasIndirect(const ShadePoint& sp) const {
-  return !(maxDepth_ >= 0 && sp.depth + 2 > maxDepth_) && sp.depth < kHardDepthLimit;
+  return withinMaxDepth(maxDepth_, sp.depth + 2) && sp.depth < kHardDepthLimit;
 }
 
 bool CacheEngine::continuesPath(const ShadePoint& sp) const {
@@ -104,7 +105,7 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& sp = pts[i];
       if (!sp.active) continue;
-      if (maxDepth_ >= 0 && sp.depth + 1 > maxDepth_) continue;
+      if (!withinMaxDepth(maxDepth_, sp.depth + 1)) continue;
       // Secondary hits (of record rays, or of continuations below importance-sampled surfaces):
       // a Lambertian hit skips the BSDF strategy and its ray (see directLightLightOnly); for
       // record rays its noise is averaged over the hemisphere anyway. A record ray's hit draws
@@ -201,7 +202,7 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
 void CacheEngine::fill(const std::vector<ShadePoint>& pts, const std::vector<float>& baseLum, bool adaptive) {
   std::map<CacheKey, std::vector<size_t>> groups;
   for (size_t i = 0; i < pts.size(); ++i)
-    if (isCached(technique(pts[i])) && (maxDepth_ < 0 || pts[i].depth + 2 <= maxDepth_)) groups[keyFor(pts[i])].push_back(i);
+    if (isCached(technique(pts[i])) && withinMaxDepth(maxDepth_, pts[i].depth + 2)) groups[keyFor(pts[i])].push_back(i);
   for (auto& [key, idx] : groups) {
     std::vector<ShadePoint> sub(idx.size());
     std::vector<float> lum(idx.size(), 0.0f);
