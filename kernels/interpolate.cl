@@ -1,9 +1,9 @@
 /* interpolate: Λ(p) = Σ w_c·Rot_c(Λ_r + dt·∂Λ_r/∂t + db·∂Λ_r/∂b) / Σ w_c (host/sh/batches.h
  * InterpolateBatch). World-frame mode (rc_interpolate_world) sums in world frame and rotates once
- * (rotation is linear and the weights are scalars, DESIGN §3): one work-item sums RC_VEC points
- * into the lanes of a structure of arrays and rotates them side by side, as sh_rotate does.
- * Per-record mode (rc_interpolate_record) rotates every contribution from its record's frame into
- * p's: one work-item per point. */
+ * (rotation is linear and the weights are scalars, ARCHITECTURE.md §Kernels): one work-item sums
+ * RC_VEC points into the lanes of a structure of arrays and rotates them side by side, as sh_rotate
+ * does. Per-record mode (rc_interpolate_record) rotates every contribution from its record's frame
+ * into p's: one work-item per point. */
 #include "shared/rc_types.h"
 #ifndef RC_ORDER
 #define RC_ORDER 10

@@ -4,3 +4,6 @@ set_tests_properties(cli PROPERTIES LABELS cli TIMEOUT 300)
 # The merl BSDF end to end: generator, relative file name, render, bad file.
 add_test(NAME cli_merl COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/merl_tests.sh $<TARGET_FILE:rcache> $<TARGET_FILE:merl_generate>)
 set_tests_properties(cli_merl PROPERTIES LABELS cli TIMEOUT 120)
+# Integrator selection end to end: --integrator, auto, Mitsuba aliases, nested wrappers, -D routing.
+add_test(NAME cli_integrators COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/integrator_tests.sh $<TARGET_FILE:rcache>)
+set_tests_properties(cli_integrators PROPERTIES LABELS cli TIMEOUT 120)

@@ -2,8 +2,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -11,21 +11,21 @@
 
 #include "app/cli_args.h"
 #include "app/diff_command.h"
+#include "app/integrator_registry.h"
 #include "app/progress_bar.h"
 #include "app/stats_report.h"
-#include "cache/cache_params.h"
-#include "cache/rcache_integrator.h"
 #include "cl/sh_backend.h"
 #include "cl/verify.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/timing.h"
 #include "geometry/accel.h"
 #include "image/image_file.h"
 #include "image/oiio_module.h"
 #include "render/image_io.h"
 #include "render/light_sampler.h"
-#include "render/path_integrator.h"
+#include "scene/param_reader.h"
 #include "scene/scene_loader.h"
 
 namespace rc {
@@ -38,9 +38,6 @@ extern "C" void onInterrupt(int) {
   // Second Ctrl-C: the user insists, leave immediately.
   if (gCancel.exchange(true)) std::_Exit(130);
 }
-
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 std::string defaultOutputPath(const std::string& scenePath) {
   const size_t slash = scenePath.find_last_of('/');
@@ -68,6 +65,31 @@ bool sceneHasCachedMaterial(const Scene& scene) {
   return false;
 }
 
+// --integrator NAME renders NAME whatever the file says; auto renders the file's integrator, except
+// that a path tracer (path, volpath, volpathmis, or no <integrator>) becomes rcache when the scene
+// has a material rcache caches: the same estimate, cached.
+std::string chooseIntegrator(const std::string& requested, const Scene& scene) {
+  if (requested != "auto") return requested;
+  const IntegratorEntry* file = findIntegrator(scene.integrator.type);
+  if (file && file->pathFamily && sceneHasCachedMaterial(scene)) return "rcache";
+  return scene.integrator.type;
+}
+
+// The integrator to render with (--integrator, else the file's), with the -D names that are its
+// parameters applied: they override the file; other names are scene parameters only, as in Mitsuba.
+std::unique_ptr<Integrator> integratorFor(const RenderArgs& ra, const Scene& scene, const IntegratorEntry*& entry) {
+  IntegratorSettings settings = scene.integrator;
+  settings.type = chooseIntegrator(ra.integrator, scene);
+  const std::vector<std::string> paramNames = integratorParameterNames(settings.type);
+  for (const auto& kv : ra.defines)
+    if (std::find(paramNames.begin(), paramNames.end(), kv.first) != paramNames.end())
+      settings.props.set(kv.first, textProperty(kv.second));
+  std::vector<std::string> warnings;
+  auto integrator = makeIntegrator(settings, ra.lenient, settings.type == scene.integrator.type, &warnings, &entry);
+  for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+  return integrator;
+}
+
 int runRender(const std::vector<std::string>& args) {
   RenderArgs ra = parseRenderArgs(args);
   if (ra.threads > 0) setThreadCount(ra.threads);
@@ -81,36 +103,27 @@ int runRender(const std::vector<std::string>& args) {
     }
 
   RenderStats stats;
-  const auto tStart = Clock::now();
+  const auto tStart = SteadyClock::now();
   LoadOptions lo;
   lo.defines = ra.defines;
   lo.lenient = ra.lenient;
   std::vector<std::string> warnings;
   Scene scene = loadScene(ra.scenePath, lo, &warnings);
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
-  // -D also reaches the integrator's own parameters (a, rays, order, ...), overriding the file;
-  // other names are scene parameters only.
-  for (const auto& kv : ra.defines)
-    if (isIntegratorParamName(kv.first)) scene.integrator.params[kv.first] = kv.second;
+  const IntegratorEntry* entry = nullptr;
+  std::unique_ptr<Integrator> integrator = integratorFor(ra, scene, entry);
   const double loadS = secondsSince(tStart);
 
-  const auto tBvh = Clock::now();
+  const auto tBvh = SteadyClock::now();
   Accel accel(scene);
   LightSampler lights(scene);
   const double bvhS = secondsSince(tBvh);
 
-  std::string integratorName = ra.integrator;
-  if (integratorName == "auto") integratorName = sceneHasCachedMaterial(scene) ? "rcache" : "path";
-
   std::unique_ptr<ShBackend> backend;
-  std::unique_ptr<Integrator> integrator;
-  if (integratorName == "rcache") {
+  if (entry->usesKernels) {
     std::string notice;
     backend = makeShBackend(ra.device, &notice);
     if (!notice.empty() && !ra.quiet) std::cerr << "notice: " << notice << "\n";
-    integrator = makeRcacheIntegrator(scene.integrator);
-  } else {
-    integrator = makePathIntegrator(scene.integrator);
   }
 
   ProgressBar bar(ra.quiet);
@@ -120,7 +133,6 @@ int runRender(const std::vector<std::string>& args) {
   opts.adaptive.threshold = ra.adaptiveThreshold;
   opts.adaptive.maxSpp = ra.maxSpp;
   opts.seed = ra.seed;
-  opts.quiet = ra.quiet;
   opts.aovs = ra.aovs;
   opts.cacheSave = ra.cacheSave;
   opts.cacheLoad = ra.cacheLoad;
@@ -128,13 +140,13 @@ int runRender(const std::vector<std::string>& args) {
                     [&bar](const std::string& phase, double done, double total) { bar.update(phase, done, total); }};
 
   std::signal(SIGINT, onInterrupt);
-  const auto tRender = Clock::now();
+  const auto tRender = SteadyClock::now();
   Image image = integrator->render(ctx, stats);
   const double renderS = secondsSince(tRender);
   std::signal(SIGINT, SIG_DFL);
   bar.finish();
 
-  const auto tWrite = Clock::now();
+  const auto tWrite = SteadyClock::now();
   writeImage(image, output);
   const double writeS = secondsSince(tWrite);
 

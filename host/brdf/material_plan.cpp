@@ -6,13 +6,13 @@
 #include <iostream>
 #include <map>
 #include <memory>
-#include <sstream>
 
 #include "brdf/order_selection.h"
 #include "brdf/table_builder.h"
 #include "brdf/table_cache.h"
 #include "brdf/table_layout.h"
 #include "core/error.h"
+#include "core/json_writer.h"
 
 namespace rc {
 
@@ -28,25 +28,7 @@ std::string quadKey(const LobeQuadrature& q) {
   return "quad=" + std::to_string(q.bsdfSamples) + "/" + std::to_string(q.cosineSamples);
 }
 
-std::string jsonEscape(const std::string& s) {
-  std::string o;
-  for (char ch : s) {
-    const unsigned char c = static_cast<unsigned char>(ch);
-    if (c == '"' || c == '\\') {
-      o += '\\';
-      o += ch;
-    } else if (c < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      o += buf;
-    } else {
-      o += ch;
-    }
-  }
-  return o;
-}
-
-enum class Kind { Sampled, Diffuse, Glossy };
+using Kind = BrdfTableSet::Kind;
 
 Kind classify(const Bsdf& bsdf) {
   const uint32_t lobes = bsdf.lobes();
@@ -56,13 +38,7 @@ Kind classify(const Bsdf& bsdf) {
   return Kind::Sampled;  // no continuous reflection lobe: nothing to cache
 }
 
-}  // namespace
-
-void BrdfTableSet::build(const std::vector<BsdfPtr>& bsdfs, const BrdfTableOptions& opt) {
-  plans_.clear();
-  tables_.clear();
-  data_.clear();
-  cacheDir_.clear();
+void checkOptions(const BrdfTableOptions& opt) {
   if (opt.maxOrder < 1 || opt.maxOrder > kMaxKernelOrder)
     throw Error("brdf tables: max SH order " + std::to_string(opt.maxOrder) + " outside 1.." + std::to_string(kMaxKernelOrder));
   if (opt.orderOverride < 0 || opt.orderOverride > kMaxKernelOrder)
@@ -73,7 +49,73 @@ void BrdfTableSet::build(const std::vector<BsdfPtr>& bsdfs, const BrdfTableOptio
     throw Error("brdf tables: tolerance " + std::to_string(opt.tolerance) + " outside (0, 1)");
   if (opt.isotropicRes < 2 || opt.anisotropicRes < 2 || opt.diffuseRes < 2)
     throw Error("brdf tables: table resolutions must be at least 2");
+}
 
+}  // namespace
+
+// The disk cache of plans and tables, or none (disabled, or no cached material).
+struct BrdfDiskTables {
+  std::unique_ptr<BrdfDiskCache> cache;
+  bool forceRebuild = false;
+  bool load(const std::string& key, CachedBlob& blob) const { return cache && !forceRebuild && cache->load(key, blob); }
+  void store(const std::string& key, const CachedBlob& blob) const {
+    if (cache) cache->store(key, blob);
+  }
+};
+
+namespace {
+
+// The SH order of a glossy material (0: too sharp for the cap) and its worst truncation error per
+// order, from the disk cache or selectShOrder. `hit` becomes false when computed.
+int glossyOrder(const Bsdf& bsdf, const std::string& base, const BrdfTableOptions& opt, const BrdfDiskTables& disk,
+                std::vector<double>& worst, bool& hit) {
+  const std::string planKey = base + "\nplan tol=" + hexFloat(opt.tolerance) + " theta=" + hexFloat(opt.planMaxThetaDeg) +
+                              " max=" + std::to_string(opt.maxOrder) + " " + quadKey(opt.planQuadrature);
+  CachedBlob blob;
+  if (disk.load(planKey, blob) && blob.kind == -1 && blob.res == opt.maxOrder &&
+      blob.payload.size() == static_cast<size_t>(opt.maxOrder) && blob.order >= 0 && blob.order <= opt.maxOrder) {
+    worst.assign(blob.payload.begin(), blob.payload.end());
+    return blob.order;
+  }
+  hit = false;
+  const OrderChoice choice = selectShOrder(bsdf, opt.tolerance, opt.maxOrder, opt.planQuadrature, opt.planMaxThetaDeg);
+  worst = choice.worstError;
+  blob.kind = -1;
+  blob.order = choice.order;
+  blob.res = opt.maxOrder;
+  blob.payload.assign(worst.begin(), worst.end());
+  disk.store(planKey, blob);
+  return choice.order;
+}
+
+// A table's floats, from the disk cache or built. `hit` becomes false when built.
+std::vector<float> loadOrBuildTable(const Bsdf& bsdf, const std::string& tableKey, int kind, int order, int res,
+                                    const LobeQuadrature& quad, const BrdfDiskTables& disk, bool& hit) {
+  CachedBlob blob;
+  if (disk.load(tableKey, blob) && blob.kind == kind && blob.order == order && blob.res == res &&
+      blob.payload.size() == tableFloatCount(kind, order, res))
+    return std::move(blob.payload);
+  hit = false;
+  blob.kind = kind;
+  blob.order = order;
+  blob.res = res;
+  blob.payload = buildBrdfTable(bsdf, kind, order, res, quad);
+  disk.store(tableKey, blob);
+  return std::move(blob.payload);
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+void BrdfTableSet::build(const std::vector<BsdfPtr>& bsdfs, const BrdfTableOptions& opt) {
+  plans_.clear();
+  tables_.clear();
+  data_.clear();
+  cacheDir_.clear();
+  checkOptions(opt);
   auto notice = opt.notice ? opt.notice : [](const std::string& m) { std::cerr << m << "\n"; };
   std::vector<Kind> kinds;
   bool anyCached = false;
@@ -82,109 +124,72 @@ void BrdfTableSet::build(const std::vector<BsdfPtr>& bsdfs, const BrdfTableOptio
     kinds.push_back(classify(*b));
     anyCached = anyCached || kinds.back() != Kind::Sampled;
   }
-
-  std::unique_ptr<BrdfDiskCache> cache;
+  BrdfDiskTables disk;
+  disk.forceRebuild = opt.forceRebuild;
   if (anyCached && opt.useDiskCache) {
-    cache = std::make_unique<BrdfDiskCache>(opt.cacheDir, notice);
-    if (cache->enabled()) cacheDir_ = cache->directory();
+    disk.cache = std::make_unique<BrdfDiskCache>(opt.cacheDir, notice);
+    if (disk.cache->enabled()) cacheDir_ = disk.cache->directory();
   }
-  auto load = [&](const std::string& key, CachedBlob& blob) {
-    return cache && !opt.forceRebuild && cache->load(key, blob);
-  };
-  auto store = [&](const std::string& key, const CachedBlob& blob) {
-    if (cache) cache->store(key, blob);
-  };
-
   std::map<std::string, int> tableByKey;  // equal parameter keys share one table
-  for (size_t m = 0; m < bsdfs.size(); ++m) {
-    const Bsdf& bsdf = *bsdfs[m];
-    const auto start = std::chrono::steady_clock::now();
-    MaterialPlan plan;
-    plan.name = bsdf.id.empty() ? bsdf.typeName() : bsdf.id;
-    plan.technique = kTechniqueImportanceSampling;
-    if (kinds[m] == Kind::Sampled) {
-      plans_.push_back(plan);
-      continue;
-    }
-    const std::string base = "rcache brdf table v" + std::to_string(kBrdfCacheFormatVersion) + "\n" + bsdf.parameterKey();
-    bool hit = true;
-    int order = 0;
-    if (kinds[m] == Kind::Diffuse) {
-      plan.technique = kTechniqueIrradianceCache;
-      order = opt.diffuseOrder;
-    } else if (opt.orderOverride > 0) {
-      plan.technique = kTechniqueRadianceCache;
-      order = opt.orderOverride;
-    } else {
-      const std::string planKey = base + "\nplan tol=" + hexFloat(opt.tolerance) + " theta=" + hexFloat(opt.planMaxThetaDeg) + " max=" +
-                                  std::to_string(opt.maxOrder) + " " + quadKey(opt.planQuadrature);
-      CachedBlob blob;
-      std::vector<double> worst;
-      if (load(planKey, blob) && blob.kind == -1 && blob.res == opt.maxOrder &&
-          blob.payload.size() == static_cast<size_t>(opt.maxOrder) && blob.order >= 0 && blob.order <= opt.maxOrder) {
-        order = blob.order;
-        worst.assign(blob.payload.begin(), blob.payload.end());
-      } else {
-        hit = false;
-        const OrderChoice choice = selectShOrder(bsdf, opt.tolerance, opt.maxOrder, opt.planQuadrature, opt.planMaxThetaDeg);
-        order = choice.order;
-        worst = choice.worstError;
-        blob.kind = -1;
-        blob.order = order;
-        blob.res = opt.maxOrder;
-        blob.payload.assign(worst.begin(), worst.end());
-        store(planKey, blob);
-      }
-      if (order == 0) {  // too sharp for the cap
-        plan.truncationError = worst.empty() ? 0.0 : worst.back();
-        plan.tableCacheHit = hit;
-        plan.tableMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        plans_.push_back(plan);
-        continue;
-      }
-      plan.technique = kTechniqueRadianceCache;
-      plan.truncationError = worst[order - 1];
-    }
+  for (size_t m = 0; m < bsdfs.size(); ++m) plans_.push_back(planMaterial(*bsdfs[m], kinds[m], opt, disk, tableByKey));
+}
 
-    const int kind = bsdf.isotropic() ? RC_TABLE_ISOTROPIC_1D : RC_TABLE_ANISOTROPIC_2D;
-    const int res = kinds[m] == Kind::Diffuse ? opt.diffuseRes
-                    : kind == RC_TABLE_ISOTROPIC_1D ? opt.isotropicRes
-                                                    : opt.anisotropicRes;
-    const LobeQuadrature& quad = kind == RC_TABLE_ANISOTROPIC_2D ? opt.anisotropicQuadrature : opt.tableQuadrature;
-    const std::string tableKey = base + "\ntable kind=" + std::to_string(kind) + " res=" + std::to_string(res) +
-                                 " order=" + std::to_string(order) + " " + quadKey(quad);
-    plan.shOrder = order;
-    plan.tableKind = kind;
-    if (auto it = tableByKey.find(tableKey); it != tableByKey.end()) {
-      plan.tableIndex = it->second;  // same parameters as an earlier material
-    } else {
-      const size_t count = tableFloatCount(kind, order, res);
-      CachedBlob blob;
-      if (!(load(tableKey, blob) && blob.kind == kind && blob.order == order && blob.res == res &&
-            blob.payload.size() == count)) {
-        hit = false;
-        blob.kind = kind;
-        blob.order = order;
-        blob.res = res;
-        blob.payload = buildBrdfTable(bsdf, kind, order, res, quad);
-        store(tableKey, blob);
-      }
-      RcBrdfTable t;
-      t.kind = kind;
-      t.order = order;
-      t.res = res;
-      if (data_.size() + count > static_cast<size_t>(INT32_MAX))
-        throw Error("brdf tables: table data exceeds 2^31 floats");
-      t.offset = static_cast<int32_t>(data_.size());
-      data_.insert(data_.end(), blob.payload.begin(), blob.payload.end());
-      plan.tableIndex = static_cast<int>(tables_.size());
-      tables_.push_back(t);
-      tableByKey[tableKey] = plan.tableIndex;
+MaterialPlan BrdfTableSet::planMaterial(const Bsdf& bsdf, Kind kind, const BrdfTableOptions& opt,
+                                        const BrdfDiskTables& disk, std::map<std::string, int>& tableByKey) {
+  const auto start = std::chrono::steady_clock::now();
+  MaterialPlan plan;
+  plan.name = bsdf.id.empty() ? bsdf.typeName() : bsdf.id;
+  plan.technique = Technique::ImportanceSampling;
+  if (kind == Kind::Sampled) return plan;
+  const std::string base = "rcache brdf table v" + std::to_string(kBrdfCacheFormatVersion) + "\n" + bsdf.parameterKey();
+  bool hit = true;
+  int order = 0;
+  if (kind == Kind::Diffuse) {
+    plan.technique = Technique::IrradianceCache;
+    order = opt.diffuseOrder;
+  } else if (opt.orderOverride > 0) {
+    plan.technique = Technique::RadianceCache;
+    order = opt.orderOverride;
+  } else {
+    std::vector<double> worst;
+    order = glossyOrder(bsdf, base, opt, disk, worst, hit);
+    if (order == 0) {  // too sharp for the cap
+      plan.truncationError = worst.empty() ? 0.0 : worst.back();
+      plan.tableCacheHit = hit;
+      plan.tableMs = millisecondsSince(start);
+      return plan;
     }
-    plan.tableCacheHit = hit;
-    plan.tableMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    plans_.push_back(plan);
+    plan.technique = Technique::RadianceCache;
+    plan.truncationError = worst[order - 1];
   }
+  const int tableKind = bsdf.isotropic() ? RC_TABLE_ISOTROPIC_1D : RC_TABLE_ANISOTROPIC_2D;
+  const int res = kind == Kind::Diffuse                   ? opt.diffuseRes
+                  : tableKind == RC_TABLE_ISOTROPIC_1D ? opt.isotropicRes
+                                                       : opt.anisotropicRes;
+  const LobeQuadrature& quad = tableKind == RC_TABLE_ANISOTROPIC_2D ? opt.anisotropicQuadrature : opt.tableQuadrature;
+  const std::string tableKey = base + "\ntable kind=" + std::to_string(tableKind) + " res=" + std::to_string(res) +
+                               " order=" + std::to_string(order) + " " + quadKey(quad);
+  plan.shOrder = order;
+  plan.tableKind = tableKind;
+  if (auto it = tableByKey.find(tableKey); it != tableByKey.end()) {
+    plan.tableIndex = it->second;  // same parameters as an earlier material
+  } else {
+    const std::vector<float> payload = loadOrBuildTable(bsdf, tableKey, tableKind, order, res, quad, disk, hit);
+    RcBrdfTable t;
+    t.kind = tableKind;
+    t.order = order;
+    t.res = res;
+    if (data_.size() + payload.size() > static_cast<size_t>(INT32_MAX))
+      throw Error("brdf tables: table data exceeds 2^31 floats");
+    t.offset = static_cast<int32_t>(data_.size());
+    data_.insert(data_.end(), payload.begin(), payload.end());
+    plan.tableIndex = static_cast<int>(tables_.size());
+    tables_.push_back(t);
+    tableByKey[tableKey] = plan.tableIndex;
+  }
+  plan.tableCacheHit = hit;
+  plan.tableMs = millisecondsSince(start);
+  return plan;
 }
 
 int BrdfTableSet::maxTableOrder() const {
@@ -205,19 +210,29 @@ void BrdfTableSet::lookup(int tableIndex, const Vec3& wo, std::vector<double>& o
   lookupTable(t, data_.data() + t.offset, wo, out);
 }
 
-std::string BrdfTableSet::materialsJson() const {
-  std::ostringstream o;
-  o << "[";
-  for (size_t i = 0; i < plans_.size(); ++i) {
-    const MaterialPlan& p = plans_[i];
-    char ms[32];
-    std::snprintf(ms, sizeof ms, "%.3f", p.tableMs);
-    o << (i ? ", " : "") << "{\"name\": \"" << jsonEscape(p.name) << "\", \"technique\": \"" << jsonEscape(p.technique)
-      << "\", \"sh_order\": " << p.shOrder << ", \"table_ms\": " << ms
-      << ", \"table_cache_hit\": " << (p.tableCacheHit ? "true" : "false") << "}";
+const char* techniqueName(Technique t) {
+  switch (t) {
+    case Technique::IrradianceCache: return "irradiance cache";
+    case Technique::RadianceCache: return "radiance cache";
+    case Technique::ImportanceSampling: return "importance sampling";
+    case Technique::None: break;
   }
-  o << "]";
-  return o.str();
+  return "none";
+}
+
+std::string BrdfTableSet::materialsJson() const {
+  JsonWriter w;
+  w.beginArray();
+  for (const MaterialPlan& p : plans_)
+    w.beginObject()
+        .field("name", p.name)
+        .field("technique", techniqueName(p.technique))
+        .field("sh_order", p.shOrder)
+        .field("table_ms", p.tableMs)
+        .field("table_cache_hit", p.tableCacheHit)
+        .endObject();
+  w.endArray();
+  return w.str();
 }
 
 double BrdfTableSet::totalMs() const {

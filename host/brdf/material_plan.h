@@ -1,6 +1,6 @@
 #pragma once
-// Per-material technique, SH order and BRDF×cos coefficient table (DESIGN §1 "analyse", §3
-// brdf_project). For every BSDF of a scene:
+// Per-material technique, SH order and BRDF×cos coefficient table (ARCHITECTURE.md §Pipeline, §Kernels
+//). For every BSDF of a scene:
 //   delta lobes or transmission        → "importance sampling" (no table)
 //   diffuse only                       → "irradiance cache": order-3 table of the clamped-cosine
 //                                        lobe (same table machinery as glossy, one cache)
@@ -11,6 +11,7 @@
 // isotropic BSDFs, 2-D parabolic for anisotropic ones. Tables and order choices are cached on
 // disk (brdf/table_cache.h). No cached material in the scene → nothing is built.
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -21,13 +22,17 @@
 
 namespace rc {
 
-inline constexpr const char* kTechniqueRadianceCache = "radiance cache";
-inline constexpr const char* kTechniqueIrradianceCache = "irradiance cache";
-inline constexpr const char* kTechniqueImportanceSampling = "importance sampling";
+// How a material's indirect light is estimated; shared by the plan and the cache engine (which
+// uses None for points that get no indirect light: inactive, or the back of a one-sided BSDF).
+enum class Technique { None, IrradianceCache, RadianceCache, ImportanceSampling };
+
+inline bool isCached(Technique t) { return t == Technique::IrradianceCache || t == Technique::RadianceCache; }
+// "irradiance cache", "radiance cache", "importance sampling" (statistics), "none".
+const char* techniqueName(Technique t);
 
 struct MaterialPlan {
   std::string name;          // Bsdf::id
-  std::string technique;     // one of the kTechnique* strings
+  Technique technique = Technique::ImportanceSampling;
   int shOrder = 0;           // table order (0 without a table)
   double tableMs = 0.0;      // time to plan + build or load this material's table
   bool tableCacheHit = false;  // table (and order choice) loaded from the disk cache
@@ -61,6 +66,8 @@ struct BrdfTableOptions {
   std::function<void(const std::string&)> notice;
 };
 
+struct BrdfDiskTables;  // the disk cache of plans and tables (material_plan.cpp)
+
 class BrdfTableSet {
  public:
   BrdfTableSet() = default;
@@ -82,7 +89,13 @@ class BrdfTableSet {
   double totalMs() const;
   std::string cacheDirectory() const { return cacheDir_; }  // "" when the disk cache was not used
 
+  // What a material needs: sampling only, an irradiance (diffuse) or a radiance (glossy) cache.
+  enum class Kind { Sampled, Diffuse, Glossy };
+
  private:
+  // One material's plan, adding its table unless an equal one (tableByKey) exists.
+  MaterialPlan planMaterial(const Bsdf& bsdf, Kind kind, const BrdfTableOptions& opt, const BrdfDiskTables& disk,
+                            std::map<std::string, int>& tableByKey);
   std::vector<MaterialPlan> plans_;
   std::vector<RcBrdfTable> tables_;
   std::vector<float> data_;

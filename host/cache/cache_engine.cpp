@@ -1,23 +1,23 @@
 #include "cache/cache_engine.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "cache/record_octree.h"
+#include "cache/rng_salts.h"
+#include "cache/world_frame.h"
 #include "cl/sh_backend.h"
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/rng.h"
+#include "core/timing.h"
 #include "render/direct_light.h"
+#include "scene/integrator_params.h"
 #include "sh/sh_basis.h"
 
 namespace rc {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Interpolation/shading runs in chunks so that Λ of a chunk ([P][3][n²] floats) stays small
 // (4096 points at order 16 = 12 MB) however many points a batch of records produced.
@@ -28,6 +28,8 @@ constexpr int kHardDepthLimit = 1000;
 // A record ray's hit starts its low-discrepancy dimensions at the second pair (ShadePoint::ldDim
 // = 0 means "none"; the pairs are scrambled independently, so skipping one costs nothing).
 constexpr uint32_t kRecordLowDiscrepancyFirstDim = 2;
+// Adaptive-caching checks per ensureCoverage call: each may shrink records and uncover points.
+constexpr int kMaxAdaptiveRounds = 4;
 
 void frameRows(const Frame& f, float* out) {
   const Vec3 rows[3] = {f.t, f.b, f.n};
@@ -43,20 +45,17 @@ CacheEngine::CacheEngine(const RenderContext& ctx, const RcacheParams& params, c
       lo_(sceneLo), hi_(sceneHi) {
   const auto& bsdfs = ctx.scene.bsdfs;
   const auto& plans = tables.plans();
-  planTech_.assign(bsdfs.size(), 0);
+  planTech_.assign(bsdfs.size(), Technique::ImportanceSampling);
   planOrder_.assign(bsdfs.size(), 0);
   twoSided_.assign(bsdfs.size(), false);
   for (size_t i = 0; i < bsdfs.size(); ++i) {
     twoSided_[i] = bsdfs[i]->typeName() == "twosided";
     const MaterialPlan* plan = i < plans.size() ? &plans[i] : nullptr;
-    if (plan && plan->tableIndex >= 0 &&
-        (plan->technique == kTechniqueRadianceCache || plan->technique == kTechniqueIrradianceCache)) {
-      planTech_[i] = 1;
+    if (plan && plan->tableIndex >= 0 && isCached(plan->technique)) {
+      planTech_[i] = plan->technique;
       // Records of a material have its table's order; the TL approximation needs only the
       // irradiance and the dominant direction (bands 0..2).
       planOrder_[i] = params.tlMode ? 3 : plan->shOrder;
-    } else {
-      planTech_[i] = 2;
     }
   }
 }
@@ -67,21 +66,23 @@ float CacheEngine::footprint(const Vec3& p) const {
 
 float CacheEngine::aForLevel(int level) const { return params_.a * std::pow(params_.secondaryAScale, float(level)); }
 
-int CacheEngine::technique(const ShadePoint& sp) const {
-  if (!sp.active || sp.hit.bsdf < 0) return 0;
-  const int t = planTech_[static_cast<size_t>(sp.hit.bsdf)];
-  if (t == 1) {
-    if (sp.wo.z <= 0.0f) return 0;  // back of a one-sided BSDF: black
-    if (sp.level >= params_.cacheDepth) return 2;
+Technique CacheEngine::technique(const ShadePoint& sp) const {
+  if (!sp.active || sp.hit.bsdf < 0) return Technique::None;
+  const Technique t = planTech_[static_cast<size_t>(sp.hit.bsdf)];
+  if (isCached(t)) {
+    if (sp.wo.z <= 0.0f) return Technique::None;  // back of a one-sided BSDF: black
+    if (sp.level >= params_.cacheDepth) return Technique::ImportanceSampling;
   }
   return t;
 }
 
 bool CacheEngine::hasIndirect(const ShadePoint& sp) const {
-  return !(maxDepth_ >= 0 && sp.depth + 2 > maxDepth_) && sp.depth < kHardDepthLimit;
+  return withinMaxDepth(maxDepth_, sp.depth + 2) && sp.depth < kHardDepthLimit;
 }
 
-bool CacheEngine::continuesPath(const ShadePoint& sp) const { return hasIndirect(sp) && technique(sp) == 2; }
+bool CacheEngine::continuesPath(const ShadePoint& sp) const {
+  return hasIndirect(sp) && technique(sp) == Technique::ImportanceSampling;
+}
 
 CacheKey CacheEngine::keyFor(const ShadePoint& sp) const {
   CacheKey k;
@@ -104,7 +105,7 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& sp = pts[i];
       if (!sp.active) continue;
-      if (maxDepth_ >= 0 && sp.depth + 1 > maxDepth_) continue;
+      if (!withinMaxDepth(maxDepth_, sp.depth + 1)) continue;
       // Secondary hits (of record rays, or of continuations below importance-sampled surfaces):
       // a Lambertian hit skips the BSDF strategy and its ray (see directLightLightOnly); for
       // record rays its noise is averaged over the hemisphere anyway. A record ray's hit draws
@@ -130,14 +131,14 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
   if (aov) aov->assign(pts.size(), LookupAov{});
   // Classify in parallel (technique and cache key per point), then group serially over the few
   // distinct keys in point order: millions of record-ray hits pass through here in the fill.
-  std::vector<int8_t> tech(pts.size(), 0);
+  std::vector<Technique> tech(pts.size(), Technique::None);
   std::vector<CacheKey> keys(pts.size());
   parallelFor(pts.size(), 4096, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& sp = pts[i];
       if (!hasIndirect(sp)) continue;
-      tech[i] = static_cast<int8_t>(technique(sp));
-      if (tech[i] == 1) keys[i] = keyFor(sp);
+      tech[i] = technique(sp);
+      if (isCached(tech[i])) keys[i] = keyFor(sp);
     }
   });
   std::map<CacheKey, std::vector<size_t>> groups;
@@ -146,8 +147,8 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
     CacheKey lastKey{};
     std::vector<size_t>* last = nullptr;
     for (size_t i = 0; i < pts.size(); ++i) {
-      if (tech[i] == 2) sampled.push_back(i);
-      if (tech[i] != 1) continue;
+      if (tech[i] == Technique::ImportanceSampling) sampled.push_back(i);
+      if (!isCached(tech[i])) continue;
       if (!last || keys[i] < lastKey || lastKey < keys[i]) {
         last = &groups[keys[i]];
         lastKey = keys[i];
@@ -201,7 +202,7 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
 void CacheEngine::fill(const std::vector<ShadePoint>& pts, const std::vector<float>& baseLum, bool adaptive) {
   std::map<CacheKey, std::vector<size_t>> groups;
   for (size_t i = 0; i < pts.size(); ++i)
-    if (technique(pts[i]) == 1 && (maxDepth_ < 0 || pts[i].depth + 2 <= maxDepth_)) groups[keyFor(pts[i])].push_back(i);
+    if (isCached(technique(pts[i])) && withinMaxDepth(maxDepth_, pts[i].depth + 2)) groups[keyFor(pts[i])].push_back(i);
   for (auto& [key, idx] : groups) {
     std::vector<ShadePoint> sub(idx.size());
     std::vector<float> lum(idx.size(), 0.0f);
@@ -214,6 +215,76 @@ void CacheEngine::fill(const std::vector<ShadePoint>& pts, const std::vector<flo
   }
 }
 
+void CacheEngine::lookUp(RadianceCache& cache, const std::vector<ShadePoint>& pts, const std::vector<size_t>& todo,
+                         std::vector<Lookup>& lookups, float relaxedScale) {
+  parallelFor(todo.size(), 64, [&](size_t b, size_t e) {
+    const RadianceCache::Reader reader = cache.reader();
+    for (size_t j = b; j < e; ++j) {
+      const ShadePoint& sp = pts[todo[j]];
+      Lookup& lk = lookups[todo[j]];
+      reader.lookup(sp.hit.p, sp.frame.n, lk);
+      if (!lk.covered() && relaxedScale > 1.0f) {
+        reader.lookup(sp.hit.p, sp.frame.n, lk, relaxedScale);
+        if (lk.covered()) ++stats_.relaxedLookups;
+      }
+    }
+  });
+}
+
+// Neighbour clamping on insertion shrinks the radii of older records, which can uncover points
+// found covered in an earlier round. In the final pass (relaxedScale > 1) every point is looked up
+// again, so the image is a function of the final cache alone (what --cache-load reproduces). In
+// the fill only the points one of whose records shrank are (the others keep lookups that miss the
+// newest records, a valid interpolation of the cache as it was; re-checking all would cost a third
+// of the fill's lookups).
+std::vector<size_t> CacheEngine::pointsToRecheck(const std::vector<Lookup>& lookups, std::vector<uint32_t>& shrunk,
+                                                 float relaxedScale) {
+  const size_t n = lookups.size();
+  std::vector<size_t> todo;
+  std::sort(shrunk.begin(), shrunk.end());
+  shrunk.erase(std::unique(shrunk.begin(), shrunk.end()), shrunk.end());
+  if (relaxedScale > 1.0f) {
+    todo.resize(n);
+    for (size_t i = 0; i < n; ++i) todo[i] = i;
+  } else if (!shrunk.empty())
+    for (size_t i = 0; i < n; ++i)
+      for (const RcContribution& c : lookups[i].entries)
+        if (std::binary_search(shrunk.begin(), shrunk.end(), static_cast<uint32_t>(c.record))) {
+          todo.push_back(i);
+          break;
+        }
+  shrunk.clear();
+  return todo;
+}
+
+std::vector<ShadePoint> CacheEngine::recordCandidates(const std::vector<ShadePoint>& pts,
+                                                      std::vector<size_t> uncovered, float sepPx) const {
+  // Deterministic shuffle (by the points' seeds) so candidates spread over the batch.
+  std::sort(uncovered.begin(), uncovered.end(), [&](size_t x, size_t y) {
+    const uint64_t hx = hashMix(pts[x].seed, kSaltCandidateOrder), hy = hashMix(pts[y].seed, kSaltCandidateOrder);
+    return hx != hy ? hx < hy : x < y;
+  });
+  RecordOctree accepted(lo_, hi_);
+  std::vector<ShadePoint> cands;
+  for (size_t i : uncovered) {
+    const ShadePoint& sp = pts[i];
+    bool near = false;
+    accepted.query(sp.hit.p, [&](uint32_t id) {
+      if (near) return;
+      const ShadePoint& c = cands[id];
+      const float sep = sepPx * footprint(c.hit.p);
+      if (glm::length(c.hit.p - sp.hit.p) < sep && glm::dot(c.frame.n, sp.frame.n) > 0.5f) near = true;
+    });
+    if (near) continue;
+    accepted.insert(static_cast<uint32_t>(cands.size()), sp.hit.p, sepPx * footprint(sp.hit.p));
+    cands.push_back(sp);
+    if (static_cast<int>(cands.size()) >= params_.batch) break;
+  }
+  return cands;
+}
+
+// Rounds of: look up the points still to do; if all are covered, re-check those whose records
+// shrank and run the adaptive check; else place a batch of records at spread-out uncovered points.
 void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoint>& pts, std::vector<Lookup>& lookups,
                                  const std::vector<float>* baseLum, bool adaptive, float relaxedScale) {
   RadianceCache& cache = cacheFor(key);
@@ -228,58 +299,28 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
   int adaptiveRounds = 0;
   bool created = false;
   std::vector<uint32_t> shrunk;  // records whose radius clamping lowered since the last check
-  std::vector<size_t> todo(n);
-  for (size_t i = 0; i < n; ++i) todo[i] = i;
+  std::vector<size_t> all(n);
+  for (size_t i = 0; i < n; ++i) all[i] = i;
+  std::vector<size_t> todo = all;
   for (;;) {
-    parallelFor(todo.size(), 64, [&](size_t b, size_t e) {
-      const RadianceCache::Reader reader = cache.reader();
-      for (size_t j = b; j < e; ++j) {
-        const ShadePoint& sp = pts[todo[j]];
-        Lookup& lk = lookups[todo[j]];
-        reader.lookup(sp.hit.p, sp.frame.n, lk);
-        if (!lk.covered() && relaxedScale > 1.0f) {
-          reader.lookup(sp.hit.p, sp.frame.n, lk, relaxedScale);
-          if (lk.covered()) ++stats_.relaxedLookups;
-        }
-      }
-    });
+    lookUp(cache, pts, todo, lookups, relaxedScale);
     std::vector<size_t> uncovered;
     for (size_t i : todo)
       if (!lookups[i].covered()) uncovered.push_back(i);
     if (uncovered.empty() && created) {
-      // Neighbour clamping on insertion shrinks the radii of older records, which can uncover
-      // points found covered in an earlier round. In the final pass (relaxedScale > 1) every
-      // point is looked up again, so the image is a function of the final cache alone (what
-      // --cache-load reproduces). In the fill only the points one of whose records shrank are
-      // (the others keep lookups that miss the newest records, a valid interpolation of the
-      // cache as it was): re-checking all cost a third of the fill's lookups, fill −16 % at 512².
       created = false;
-      std::sort(shrunk.begin(), shrunk.end());
-      shrunk.erase(std::unique(shrunk.begin(), shrunk.end()), shrunk.end());
-      todo.clear();
-      if (relaxedScale > 1.0f) {
-        todo.resize(n);
-        for (size_t i = 0; i < n; ++i) todo[i] = i;
-      } else if (!shrunk.empty())
-        for (size_t i = 0; i < n; ++i)
-          for (const RcContribution& c : lookups[i].entries)
-            if (std::binary_search(shrunk.begin(), shrunk.end(), static_cast<uint32_t>(c.record))) {
-              todo.push_back(i);
-              break;
-            }
-      shrunk.clear();
+      todo = pointsToRecheck(lookups, shrunk, relaxedScale);
       if (!todo.empty()) continue;
     }
     if (uncovered.empty()) {
-      if (adaptive && params_.adaptive && baseLum && adaptiveRounds < 4) {
+      if (adaptive && params_.adaptive && baseLum && adaptiveRounds < kMaxAdaptiveRounds) {
         ++adaptiveRounds;
-        const auto t0 = Clock::now();
+        const auto t0 = SteadyClock::now();
         const bool changed = adaptiveCheck(key, pts, lookups, *baseLum);
-        stats_.adaptive_s += since(t0);
+        stats_.adaptive_s += secondsSince(t0);
         if (changed) {
           // Shrunk records may uncover points and change the weights of others: look up all again.
-          todo.resize(n);
-          for (size_t i = 0; i < n; ++i) todo[i] = i;
+          todo = all;
           created = false;
           continue;
         }
@@ -287,72 +328,49 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
       break;
     }
     ++stats_.uncoveredRounds;
-    // Deterministic shuffle (by the points' seeds) so candidates spread over the batch.
-    std::sort(uncovered.begin(), uncovered.end(), [&](size_t x, size_t y) {
-      const uint64_t hx = hashMix(pts[x].seed, 0xA11CE), hy = hashMix(pts[y].seed, 0xA11CE);
-      return hx != hy ? hx < hy : x < y;
-    });
-    RecordOctree accepted(lo_, hi_);
-    std::vector<ShadePoint> cands;
-    std::vector<Vec3> candNormals;
-    for (size_t i : uncovered) {
-      const ShadePoint& sp = pts[i];
-      bool near = false;
-      accepted.query(sp.hit.p, [&](uint32_t id) {
-        if (near) return;
-        const ShadePoint& c = cands[id];
-        const float sep = sepPx * footprint(c.hit.p);
-        if (glm::length(c.hit.p - sp.hit.p) < sep && glm::dot(c.frame.n, sp.frame.n) > 0.5f) near = true;
-      });
-      if (near) continue;
-      accepted.insert(static_cast<uint32_t>(cands.size()), sp.hit.p, sepPx * footprint(sp.hit.p));
-      cands.push_back(sp);
-      if (static_cast<int>(cands.size()) >= params_.batch) break;
-    }
-    for (uint32_t id : buildRecords(key, cands)) shrunk.push_back(id);
+    for (uint32_t id : buildRecords(key, recordCandidates(pts, uncovered, sepPx))) shrunk.push_back(id);
     created = true;
     sepPx = std::max(minSepPx, 0.5f * sepPx);
     todo = uncovered;
   }
 }
 
-std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::vector<ShadePoint>& cands) {
-  if (cands.empty()) return {};
-  RadianceCache& cache = cacheFor(key);
+ProjectBatch CacheEngine::recordBatch(const CacheKey& key, const std::vector<ShadePoint>& cands) {
   const int B = static_cast<int>(cands.size());
-  int M = 0, N = 0;
-  hemisphereCells(key.level == 0 ? params_.rays : params_.secondaryRays, M, N);
-  const int S = M * N;
-  ProjectBatch pb;
-  pb.order = key.order;
-  pb.M = M;
-  pb.N = N;
-  pb.records = B;
-  pb.gradients = params_.gradients;
-  pb.pattern.resize(2 * static_cast<size_t>(S));
-  Rng prng(hashMix(ctx_.options.seed, recordCounter_, static_cast<uint64_t>(key.level) * 1000 + key.depth), 3);
-  for (auto& v : pb.pattern) v = prng.nextFloat();
-  pb.phi0.resize(B);
-  for (int b = 0; b < B; ++b) pb.phi0[b] = 2.0f * kPi * Rng(cands[b].seed, 4).nextFloat();
+  ProjectBatch rayBatch;
+  hemisphereCells(key.level == 0 ? params_.rays : params_.secondaryRays, rayBatch.M, rayBatch.N);
+  const int S = rayBatch.M * rayBatch.N;
+  rayBatch.order = key.order;
+  rayBatch.records = B;
+  rayBatch.gradients = params_.gradients;
+  rayBatch.pattern.resize(2 * static_cast<size_t>(S));
+  Rng prng(hashMix(ctx_.options.seed, recordCounter_, static_cast<uint64_t>(key.level) * 1000 + key.depth),
+           kStreamRecordPattern);
+  for (auto& v : rayBatch.pattern) v = prng.nextFloat();
+  rayBatch.phi0.resize(B);
+  for (int b = 0; b < B; ++b) rayBatch.phi0[b] = 2.0f * kPi * Rng(cands[b].seed, kStreamRecordAzimuth).nextFloat();
   // Smallest distance the gradient formula sees: a thousandth of a pixel footprint keeps 1/r
   // finite when geometry touches the record, yet far below any R_min.
   float minFp = INFINITY;
   for (const auto& c : cands) minFp = std::min(minFp, footprint(c.hit.p));
-  pb.minDistance = std::max(1e-3f * minFp, 1e-12f);
+  rayBatch.minDistance = std::max(1e-3f * minFp, 1e-12f);
+  return rayBatch;
+}
 
-  // Trace the record rays (batched), then shade their hits recursively.
-  const size_t total = static_cast<size_t>(B) * S;
+void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectBatch& rayBatch, std::vector<Hit>& hits) {
+  const int M = rayBatch.M, N = rayBatch.N, S = M * N;
+  const size_t total = cands.size() * S;
   std::vector<Ray> rays(total);
-  std::vector<Hit> hits(total);
-  parallelFor(static_cast<size_t>(B), 1, [&](size_t b0, size_t b1) {
+  hits.assign(total, Hit{});
+  parallelFor(cands.size(), 1, [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b) {
       const ShadePoint& c = cands[b];
       for (int j = 0; j < M; ++j)
         for (int k = 0; k < N; ++k) {
           const size_t s = static_cast<size_t>(j) * N + k;
-          const float ct = 1.0f - (j + pb.pattern[2 * s]) / M;
+          const float ct = 1.0f - (j + rayBatch.pattern[2 * s]) / M;
           const float st = std::sqrt(std::max(0.0f, 1.0f - ct * ct));
-          const float phi = 2.0f * kPi * (k + pb.pattern[2 * s + 1]) / N + pb.phi0[b];
+          const float phi = 2.0f * kPi * (k + rayBatch.pattern[2 * s + 1]) / N + rayBatch.phi0[b];
           const Vec3 local(st * std::cos(phi), st * std::sin(phi), ct);
           rays[b * S + s] = Accel::spawnRay(c.hit, c.frame.toWorld(local));
         }
@@ -360,16 +378,16 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
   });
   parallelFor(total, 1024, [&](size_t b, size_t e) { ctx_.accel.intersect(rays.data() + b, hits.data() + b, e - b); });
   stats_.recordRays += total;
+  // The radiance arriving along each ray: the hit's outgoing radiance, shaded recursively.
   std::vector<ShadePoint> next(total);
   parallelFor(total, 1024, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& c = cands[i / S];
-      const Hit& h = hits[i];
-      next[i] = shadePointOf(h, rays[i].d, c.depth + 1, c.level + 1, hashMix(c.seed, i % S, 0x5EED));
+      next[i] = shadePointOf(hits[i], rays[i].d, c.depth + 1, c.level + 1, hashMix(c.seed, i % S, kSaltRecordRayHit));
       // The light samples at a record's S hits are one padded Sobol sequence (index = ray): like
       // the ray directions they are stratified over the record, so the record's estimate of
       // direct light at its neighbours converges faster than with independent samples.
-      next[i].ldSeed = static_cast<uint32_t>(hashMix(c.seed, 0x1D5EED));
+      next[i].ldSeed = static_cast<uint32_t>(hashMix(c.seed, kSaltRecordLightSequence));
       next[i].ldIndex = static_cast<uint32_t>(i % S);
       next[i].ldDim = kRecordLowDiscrepancyFirstDim;
     }
@@ -378,101 +396,95 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
   radianceOut(next, L);
   next.clear();
   next.shrink_to_fit();
-
-  pb.radiance.resize(total * 3);
-  pb.distance.resize(total);
+  rayBatch.radiance.resize(total * 3);
+  rayBatch.distance.resize(total);
   parallelFor(total, 16384, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
-      for (int c = 0; c < 3; ++c) pb.radiance[3 * i + c] = L[i][c];
-      pb.distance[i] = hits[i].valid() ? hits[i].t : 0.0f;
+      for (int c = 0; c < 3; ++c) rayBatch.radiance[3 * i + c] = L[i][c];
+      rayBatch.distance[i] = hits[i].valid() ? hits[i].t : 0.0f;
     }
   });
-  ProjectResult pr;
-  auto t0 = Clock::now();
-  ctx_.backend->project(pb, pr);
-  stats_.projection_s += since(t0);
+}
+
+RecordInfo CacheEngine::clampRecord(const CacheKey& key, const ShadePoint& cand, const Hit* hits, int S,
+                                    float minDistance, float* lambda, float* gradT, float* gradB) const {
+  RecordInfo info;
+  // Harmonic mean distance (Ward): misses count as infinitely far.
+  double inv = 0.0;
+  for (int s = 0; s < S; ++s)
+    if (hits[s].valid()) inv += 1.0 / std::max(double(hits[s].t), double(minDistance));
+  const float fp = footprint(cand.hit.p);
+  const float R = inv > 0.0 ? static_cast<float>(S / inv) : INFINITY;
+  info.p = cand.hit.p;
+  info.frame = cand.frame;
+  // Gradient limit (as Mitsuba's irrcache clamps R by E/|∇E|): over the influence radius the
+  // first-order change of the record's coefficients may not exceed their own size,
+  // ‖∇Λ‖·a·R ≤ ‖Λ‖ (norms over all coefficients and channels, so the higher bands of a glossy
+  // record are held to the same bound as its mean), so gradients near touching geometry cannot
+  // extrapolate to negative or exploding radiance.
+  float Rg = INFINITY;
+  const size_t coeffs = 3 * static_cast<size_t>(key.order) * key.order;
+  if (params_.gradients) {
+    double l2 = 0, g2 = 0;
+    for (size_t o = 0; o < coeffs; ++o) {
+      l2 += double(lambda[o]) * lambda[o];
+      g2 += double(gradT[o]) * gradT[o] + double(gradB[o]) * gradB[o];
+    }
+    if (g2 > 0) Rg = static_cast<float>(std::sqrt(l2 / g2) / aForLevel(key.level));
+  }
+  // r_min and r_max bound the influence radius a·R_i in pixel footprints (scaled like a at the
+  // coarser secondary caches): a record never covers less than r_min pixels (below that a
+  // cache only re-samples what a path tracer would, at 1000 rays a pixel) nor more than r_max.
+  const float aL = aForLevel(key.level), levelScale = aL / params_.a;
+  info.R = std::min(std::max(std::min(R, Rg), params_.rMinPx * levelScale * fp / aL), params_.rMaxPx * levelScale * fp / aL);
+  // The pixel-footprint floor r_min can push R past the gradient limit (records in corners,
+  // where R is tiny and the gradient ~Λ/R): scale the gradient down so the bound holds at the
+  // radius actually used. Without this, a record 3 px wide extrapolates a gradient meant for a
+  // sub-pixel neighbourhood and paints isolated pixels many times too bright.
+  if (info.R > Rg) {
+    const float s = Rg / info.R;
+    for (size_t o = 0; o < coeffs; ++o) {
+      gradT[o] *= s;
+      gradB[o] *= s;
+    }
+  }
+  info.a = aForLevel(key.level);
+  return info;
+}
+
+// Sample → project → clamp → insert: one batch of new records at the candidates.
+std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::vector<ShadePoint>& cands) {
+  if (cands.empty()) return {};
+  RadianceCache& cache = cacheFor(key);
+  const int B = static_cast<int>(cands.size());
+  ProjectBatch rayBatch = recordBatch(key, cands);
+  const int S = rayBatch.M * rayBatch.N;
+  std::vector<Hit> hits;
+  traceRecordRays(cands, rayBatch, hits);
+  ProjectResult projected;
+  auto t0 = SteadyClock::now();
+  ctx_.backend->project(rayBatch, projected);
+  stats_.projection_s += secondsSince(t0);
   const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
   if (!params_.gradients) {
-    pr.gradT.assign(K * B, 0.0f);
-    pr.gradB.assign(K * B, 0.0f);
+    projected.gradT.assign(K * B, 0.0f);
+    projected.gradB.assign(K * B, 0.0f);
   }
   std::vector<RecordInfo> infos(B);
   for (int b = 0; b < B; ++b) {
-    stats_.droppedSamples += pr.dropped.empty() ? 0 : static_cast<uint64_t>(pr.dropped[b]);
-    // Harmonic mean distance (Ward): misses count as infinitely far.
-    double inv = 0.0;
-    for (int s = 0; s < S; ++s) {
-      const Hit& h = hits[static_cast<size_t>(b) * S + s];
-      if (h.valid()) inv += 1.0 / std::max(double(h.t), double(pb.minDistance));
-    }
-    const float fp = footprint(cands[b].hit.p);
-    const float R = inv > 0.0 ? static_cast<float>(S / inv) : INFINITY;
-    infos[b].p = cands[b].hit.p;
-    infos[b].frame = cands[b].frame;
-    // Gradient limit (as Mitsuba's irrcache clamps R by E/|∇E|): over the influence radius the
-    // first-order change of the record's coefficients may not exceed their own size,
-    // ‖∇Λ‖·a·R ≤ ‖Λ‖ (norms over all coefficients and channels, so the higher bands of a glossy
-    // record are held to the same bound as its mean), so gradients near touching geometry cannot
-    // extrapolate to negative or exploding radiance.
-    float Rg = INFINITY;
-    const size_t n2 = static_cast<size_t>(key.order) * key.order;
-    if (params_.gradients) {
-      double l2 = 0, g2 = 0;
-      for (size_t o = K * b; o < K * b + 3 * n2; ++o) {
-        l2 += double(pr.lambda[o]) * pr.lambda[o];
-        g2 += double(pr.gradT[o]) * pr.gradT[o] + double(pr.gradB[o]) * pr.gradB[o];
-      }
-      if (g2 > 0) Rg = static_cast<float>(std::sqrt(l2 / g2) / aForLevel(key.level));
-    }
-    // r_min and r_max bound the influence radius a·R_i in pixel footprints (scaled like a at the
-    // coarser secondary caches): a record never covers less than r_min pixels (below that a
-    // cache only re-samples what a path tracer would, at 1000 rays a pixel) nor more than r_max.
-    const float aL = aForLevel(key.level), levelScale = aL / params_.a;
-    infos[b].R = std::min(std::max(std::min(R, Rg), params_.rMinPx * levelScale * fp / aL),
-                          params_.rMaxPx * levelScale * fp / aL);
-    // The pixel-footprint floor r_min can push R past the gradient limit (records in corners,
-    // where R is tiny and the gradient ~Λ/R): scale the gradient down so the bound holds at the
-    // radius actually used. Without this, a record 3 px wide extrapolates a gradient meant for a
-    // sub-pixel neighbourhood and paints isolated pixels many times too bright.
-    if (infos[b].R > Rg) {
-      const float s = Rg / infos[b].R;
-      for (size_t o = K * b; o < K * b + 3 * n2; ++o) {
-        pr.gradT[o] *= s;
-        pr.gradB[o] *= s;
-      }
-    }
-    infos[b].a = aForLevel(key.level);
+    stats_.droppedSamples += projected.dropped.empty() ? 0 : static_cast<uint64_t>(projected.dropped[b]);
+    infos[b] = clampRecord(key, cands[b], &hits[static_cast<size_t>(b) * S], S, rayBatch.minDistance, &projected.lambda[K * b],
+                           &projected.gradT[K * b], &projected.gradB[K * b]);
     if (key.level == 0 && cands[b].pixel >= 0) recordPixels_.push_back(cands[b].pixel);
   }
-  std::vector<float> lw, tw, bw;
+  WorldCopies world;
   if (params_.worldFrame) {
-    // World-aligned copies (DESIGN §3): f_world(ω) = f_local(Fω) = f_local(R⁻¹ω) with R = Fᵀ,
-    // i.e. R's columns are the record's axes t, b, n.
-    RotateBatch rb;
-    rb.order = key.order;
-    rb.count = 3 * B;
-    rb.rotations.resize(9 * static_cast<size_t>(rb.count));
-    rb.coeffs.resize(K * rb.count);
-    for (int part = 0; part < 3; ++part)
-      for (int b = 0; b < B; ++b) {
-        const Frame& f = infos[b].frame;
-        float* R = &rb.rotations[9 * (static_cast<size_t>(part) * B + b)];
-        const Vec3 cols[3] = {f.t, f.b, f.n};
-        for (int r = 0; r < 3; ++r)
-          for (int c = 0; c < 3; ++c) R[3 * r + c] = cols[c][r];
-        const std::vector<float>& src = part == 0 ? pr.lambda : part == 1 ? pr.gradT : pr.gradB;
-        std::copy(src.begin() + K * b, src.begin() + K * (b + 1), rb.coeffs.begin() + K * (static_cast<size_t>(part) * B + b));
-      }
-    std::vector<float> rotated;
-    t0 = Clock::now();
-    ctx_.backend->rotate(rb, rotated);
-    stats_.projection_s += since(t0);
-    lw.assign(rotated.begin(), rotated.begin() + K * B);
-    tw.assign(rotated.begin() + K * B, rotated.begin() + 2 * K * B);
-    bw.assign(rotated.begin() + 2 * K * B, rotated.end());
+    t0 = SteadyClock::now();
+    world = rotateToWorld(*ctx_.backend, key.order, infos, projected.lambda, projected.gradT, projected.gradB);
+    stats_.projection_s += secondsSince(t0);
   }
   std::vector<uint32_t> shrunk;
-  cache.insert(std::move(infos), pr.lambda, pr.gradT, pr.gradB, lw, tw, bw, true, &shrunk);
+  cache.insert(std::move(infos), projected.lambda, projected.gradT, projected.gradB, world.lambda, world.gradT, world.gradB, true, &shrunk);
   recordCounter_ += static_cast<uint64_t>(B);
   return shrunk;
 }
@@ -487,7 +499,7 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
   // Everything else goes through the kernels below.
   if (!params_.tlMode && key.order == 3) {
     std::vector<char> lambertian(pts.size(), 0);
-    const auto t0 = Clock::now();
+    const auto t0 = SteadyClock::now();
     parallelFor(pts.size(), 256, [&](size_t b, size_t e) {
       const RadianceCache::Reader reader = cache.reader();
       uint64_t contributions = 0, count = 0;
@@ -505,7 +517,7 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
       stats_.contributions += contributions;
       stats_.lambertianLookups += count;
     });
-    stats_.interpolation_s += since(t0);
+    stats_.interpolation_s += secondsSince(t0);
     std::vector<size_t> rest;
     for (size_t i = 0; i < pts.size(); ++i)
       if (!lambertian[i]) rest.push_back(i);
@@ -533,17 +545,11 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
   // position in the chunk.
   auto interpolate = [&](size_t begin, const std::vector<uint32_t>& idx, bool world, std::vector<float>& lambda) {
     if (idx.empty()) return;
-    InterpolateBatch ib;
-    ib.order = key.order;
-    ib.worldFrame = world;
-    ib.gradients = params_.gradients;
-    ib.points = static_cast<int>(idx.size());
-    ib.pointFrames.resize(9 * idx.size());
-    ib.offsets.resize(idx.size() + 1, 0);
+    InterpolateBatch interp = interpolateBatch(key.order, world, idx.size());
     std::vector<uint32_t> used;
     for (size_t j = 0; j < idx.size(); ++j) {
       const Lookup& lk = lookups[begin + idx[j]];
-      frameRows(pts[begin + idx[j]].frame, &ib.pointFrames[9 * j]);
+      frameRows(pts[begin + idx[j]].frame, &interp.pointFrames[9 * j]);
       for (RcContribution c : lk.entries) {
         int& slot = remap[static_cast<size_t>(c.record)];
         if (slot < 0) {
@@ -551,29 +557,18 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
           used.push_back(static_cast<uint32_t>(c.record));
         }
         c.record = slot;
-        ib.entries.push_back(c);
+        interp.entries.push_back(c);
       }
-      ib.offsets[j + 1] = static_cast<int32_t>(ib.entries.size());
+      interp.offsets[j + 1] = static_cast<int32_t>(interp.entries.size());
       stats_.lookups += 1;
       stats_.contributions += lk.entries.size();
     }
-    ib.records = static_cast<int>(used.size());
-    ib.lambda.resize(K * used.size());
-    if (ib.gradients) {
-      ib.gradT.resize(K * used.size());
-      ib.gradB.resize(K * used.size());
-    }
-    if (!world) ib.recordFrames.resize(9 * used.size());
-    for (size_t r = 0; r < used.size(); ++r) {
-      cache.copyCoefficients(used[r], world, &ib.lambda[K * r], ib.gradients ? &ib.gradT[K * r] : nullptr,
-                             ib.gradients ? &ib.gradB[K * r] : nullptr);
-      if (!world) frameRows(cache.info(used[r]).frame, &ib.recordFrames[9 * r]);
-      remap[used[r]] = -1;
-    }
+    addRecords(cache, used, interp);
+    for (uint32_t r : used) remap[r] = -1;
     std::vector<float> part;
-    const auto t0 = Clock::now();
-    ctx_.backend->interpolate(ib, part);
-    stats_.interpolation_s += since(t0);
+    const auto t0 = SteadyClock::now();
+    ctx_.backend->interpolate(interp, part);
+    stats_.interpolation_s += secondsSince(t0);
     for (size_t j = 0; j < idx.size(); ++j)
       std::copy(part.begin() + K * j, part.begin() + K * (j + 1), lambda.begin() + K * idx[j]);
   };
@@ -583,7 +578,7 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
     for (size_t j = 0; j < count; ++j) {
       // frame=auto: where every contributing record lies in the point's tangent plane (all of a
       // flat wall) the per-record path costs at most an O(n²) z-rotation per record, the world
-      // path a full O(n³) rotation per point; both give the same Λ to float precision (DESIGN §3).
+      // path a full O(n³) rotation per point; both give the same Λ to float precision (ARCHITECTURE.md §Kernels).
       // The lookup tells (Lookup::sameNormal; contributions have n·n_i > 0).
       const bool record = params_.autoFrame ? lookups[begin + j].sameNormal : !params_.worldFrame;
       (record ? recordIdx : worldIdx).push_back(static_cast<uint32_t>(j));
@@ -602,7 +597,7 @@ void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, 
   const size_t n2 = static_cast<size_t>(order) * order;
   auto point = [&](size_t j) -> const ShadePoint& { return pts[outIndex ? (*outIndex)[j] : begin + j]; };
   auto slot = [&](size_t j) -> Color& { return out[outIndex ? j : begin + j]; };
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   if (params_.tlMode) {
     // Tabellion–Lamorlette 2004: the record's irradiance as if it all came from the dominant
     // direction. E = ∫ L cos from the zonal clamped-cosine coefficients (√π/2, √(π/3), √(5π)/8);
@@ -628,40 +623,99 @@ void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, 
         slot(j) = isFinite(Lo) ? Lo : Color(0.0f);
       }
     });
-    stats_.dot_s += since(t0);
+    stats_.dot_s += secondsSince(t0);
     return;
   }
-  BrdfDotBatch db;
-  db.order = order;
-  db.points = static_cast<int>(count);
-  db.lambda = lambda;
-  db.wo.resize(3 * count);
-  db.material.resize(count);
+  BrdfDotBatch dotBatch;
+  dotBatch.order = order;
+  dotBatch.points = static_cast<int>(count);
+  dotBatch.lambda = lambda;
+  dotBatch.wo.resize(3 * count);
+  dotBatch.material.resize(count);
   for (size_t j = 0; j < count; ++j) {
     const ShadePoint& sp = point(j);
-    for (int c = 0; c < 3; ++c) db.wo[3 * j + c] = sp.wo[c];
-    db.material[j] = tables_.plans()[static_cast<size_t>(sp.hit.bsdf)].tableIndex;
+    for (int c = 0; c < 3; ++c) dotBatch.wo[3 * j + c] = sp.wo[c];
+    dotBatch.material[j] = tables_.plans()[static_cast<size_t>(sp.hit.bsdf)].tableIndex;
   }
-  tables_.fillBatch(db);
+  tables_.fillBatch(dotBatch);
   std::vector<float> res;
-  ctx_.backend->brdfDot(db, res);
+  ctx_.backend->brdfDot(dotBatch, res);
   for (size_t j = 0; j < count; ++j) {
     // Extrapolation by gradients (or SH ringing) can dip below zero where light changes
     // abruptly; negative radiance is not physical and is clamped.
     const Color Lo = glm::max(Color(res[3 * j], res[3 * j + 1], res[3 * j + 2]), Color(0.0f));
     slot(j) = isFinite(Lo) ? Lo : Color(0.0f);
   }
-  stats_.dot_s += since(t0);
+  stats_.dot_s += secondsSince(t0);
 }
 
+InterpolateBatch CacheEngine::interpolateBatch(int order, bool world, size_t points) const {
+  InterpolateBatch interp;
+  interp.order = order;
+  interp.worldFrame = world;
+  interp.gradients = params_.gradients;
+  interp.points = static_cast<int>(points);
+  interp.pointFrames.resize(9 * points);
+  interp.offsets.resize(points + 1, 0);
+  return interp;
+}
+
+void CacheEngine::addRecords(const RadianceCache& cache, const std::vector<uint32_t>& ids, InterpolateBatch& interp) const {
+  const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
+  const bool world = interp.worldFrame;
+  interp.records = static_cast<int>(ids.size());
+  interp.lambda.resize(K * ids.size());
+  if (interp.gradients) {
+    interp.gradT.resize(K * ids.size());
+    interp.gradB.resize(K * ids.size());
+  }
+  if (!world) interp.recordFrames.resize(9 * ids.size());
+  for (size_t r = 0; r < ids.size(); ++r) {
+    cache.copyCoefficients(ids[r], world, &interp.lambda[K * r], interp.gradients ? &interp.gradT[K * r] : nullptr,
+                           interp.gradients ? &interp.gradB[K * r] : nullptr);
+    if (!world) frameRows(cache.info(ids[r]).frame, &interp.recordFrames[9 * r]);
+  }
+}
+
+// Each contribution (point i, record) of the points covered by two or more records, as the
+// record alone predicts the point's outgoing radiance (its Λ moved by its gradient, rotated,
+// dotted with the BRDF).
+std::vector<Color> CacheEngine::recordPredictions(const CacheKey& key, const std::vector<ShadePoint>& pts,
+                                                  const std::vector<size_t>& pairPoint,
+                                                  const std::vector<RcContribution>& pairEntry) {
+  RadianceCache& cache = cacheFor(key);
+  std::vector<Color> pred(pairPoint.size());
+  for (size_t begin = 0; begin < pairPoint.size(); begin += kChunk) {
+    const size_t count = std::min(kChunk, pairPoint.size() - begin);
+    InterpolateBatch interp = interpolateBatch(key.order, params_.worldFrame, count);
+    std::vector<uint32_t> ids(count);
+    for (size_t j = 0; j < count; ++j) {
+      RcContribution c = pairEntry[begin + j];
+      ids[j] = static_cast<uint32_t>(c.record);
+      frameRows(pts[pairPoint[begin + j]].frame, &interp.pointFrames[9 * j]);
+      c.record = static_cast<int>(j);
+      c.weight = 1.0f;
+      interp.entries.push_back(c);
+      interp.offsets[j + 1] = static_cast<int32_t>(j + 1);
+    }
+    addRecords(cache, ids, interp);
+    std::vector<float> lambda;
+    auto t0 = SteadyClock::now();
+    ctx_.backend->interpolate(interp, lambda);
+    stats_.interpolation_s += secondsSince(t0);
+    std::vector<size_t> idx(pairPoint.begin() + begin, pairPoint.begin() + begin + count);
+    std::vector<Color> part(count);
+    shadeLambda(pts, 0, count, key.order, lambda, part, &idx);
+    std::copy(part.begin(), part.end(), pred.begin() + begin);
+  }
+  return pred;
+}
+
+// EGSR 2006: at a point covered by several records, each record's own prediction should agree; a
+// disagreement above the Weber threshold would show as a visible seam, so the most deviant record
+// gets a smaller a_i.
 bool CacheEngine::adaptiveCheck(const CacheKey& key, const std::vector<ShadePoint>& pts,
                                 const std::vector<Lookup>& lookups, const std::vector<float>& baseLum) {
-  // EGSR 2006: at a point covered by several records, each record's own prediction (its Λ moved
-  // by its gradient, rotated, dotted with the BRDF) should agree; a disagreement above the Weber
-  // threshold would show as a visible seam, so the most deviant record gets a smaller a_i.
-  RadianceCache& cache = cacheFor(key);
-  const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
-  const bool world = params_.worldFrame;
   std::vector<size_t> pairPoint;
   std::vector<RcContribution> pairEntry;
   for (size_t i = 0; i < pts.size(); ++i)
@@ -671,45 +725,8 @@ bool CacheEngine::adaptiveCheck(const CacheKey& key, const std::vector<ShadePoin
         pairEntry.push_back(e);
       }
   if (pairPoint.empty()) return false;
-  std::vector<Color> pred(pairPoint.size());
-  for (size_t begin = 0; begin < pairPoint.size(); begin += kChunk) {
-    const size_t count = std::min(kChunk, pairPoint.size() - begin);
-    InterpolateBatch ib;
-    ib.order = key.order;
-    ib.worldFrame = world;
-    ib.gradients = params_.gradients;
-    ib.points = static_cast<int>(count);
-    ib.records = static_cast<int>(count);
-    ib.pointFrames.resize(9 * count);
-    ib.offsets.resize(count + 1);
-    ib.lambda.resize(K * count);
-    if (ib.gradients) {
-      ib.gradT.resize(K * count);
-      ib.gradB.resize(K * count);
-    }
-    if (!world) ib.recordFrames.resize(9 * count);
-    for (size_t j = 0; j < count; ++j) {
-      RcContribution c = pairEntry[begin + j];
-      const uint32_t id = static_cast<uint32_t>(c.record);
-      frameRows(pts[pairPoint[begin + j]].frame, &ib.pointFrames[9 * j]);
-      cache.copyCoefficients(id, world, &ib.lambda[K * j], ib.gradients ? &ib.gradT[K * j] : nullptr,
-                             ib.gradients ? &ib.gradB[K * j] : nullptr);
-      if (!world) frameRows(cache.info(id).frame, &ib.recordFrames[9 * j]);
-      c.record = static_cast<int>(j);
-      c.weight = 1.0f;
-      ib.entries.push_back(c);
-      ib.offsets[j + 1] = static_cast<int32_t>(j + 1);
-    }
-    std::vector<float> lambda;
-    auto t0 = Clock::now();
-    ctx_.backend->interpolate(ib, lambda);
-    stats_.interpolation_s += since(t0);
-    std::vector<size_t> idx(pairPoint.begin() + begin, pairPoint.begin() + begin + count);
-    std::vector<Color> part(count);
-    shadeLambda(pts, 0, count, key.order, lambda, part, &idx);
-    std::copy(part.begin(), part.end(), pred.begin() + begin);
-  }
-  std::map<uint32_t, float> shrink;
+  const std::vector<Color> pred = recordPredictions(key, pts, pairPoint, pairEntry);
+  std::map<uint32_t, float> shrink;  // record → the a_i that excludes the points it disagrees at
   for (size_t q = 0; q < pairPoint.size();) {
     const size_t i = pairPoint[q];
     size_t end = q;
@@ -740,6 +757,11 @@ bool CacheEngine::adaptiveCheck(const CacheKey& key, const std::vector<ShadePoin
     }
     q = end;
   }
+  return shrinkRecords(key, shrink);
+}
+
+bool CacheEngine::shrinkRecords(const CacheKey& key, const std::map<uint32_t, float>& shrink) {
+  RadianceCache& cache = cacheFor(key);
   bool changed = false;
   const float aL = aForLevel(key.level), aMin = aL * params_.minAScale, levelScale = aL / params_.a;
   for (const auto& [id, newA] : shrink) {

@@ -1,5 +1,5 @@
 #pragma once
-// The radiance-caching engine (DESIGN §1): GetOutRadiance of the course notes, batched.
+// The radiance-caching engine (ARCHITECTURE.md §Pipeline): GetOutRadiance of the course notes, batched.
 //   radianceOut(points)  = direct light (render/direct_light.h, the path tracer's estimator) +
 //                          indirect(points)                       [emission of the points excluded]
 //   indirect(points)     = cached materials: ensure the cache covers the points (new records are
@@ -75,20 +75,24 @@ class CacheEngine {
     const bool two = hit.valid() && hit.bsdf >= 0 && twoSided_[static_cast<size_t>(hit.bsdf)];
     return makeShadePoint(hit, dir, depth, level, seed, two);
   }
-  // Technique of a point's material: 0 none, 1 cache, 2 BSDF sampling.
-  int technique(const ShadePoint& sp) const;
-  // Whether indirect() continues a path from sp by BSDF sampling (technique 2 within the depth
-  // limits). Such a point takes only the light half of its direct light (lightStrategyMis): the
+  // Technique of a point: its material's (irradiance/radiance cache, importance sampling), None
+  // for points without indirect light, and importance sampling for cached materials past
+  // cache_depth.
+  Technique technique(const ShadePoint& sp) const;
+  // Whether indirect() continues a path from sp by BSDF sampling (importance sampling within the
+  // depth limits). Such a point takes only the light half of its direct light (lightStrategyMis): the
   // continuation ray is also its MIS BSDF sample and adds the emitter it hits, as in the path
   // tracer, so one ray serves both.
   bool continuesPath(const ShadePoint& sp) const;
   // Whether indirect() gives sp any indirect light at all (max_depth and the hard depth limit).
   bool hasIndirect(const ShadePoint& sp) const;
   CacheKey keyFor(const ShadePoint& sp) const;
+  int maxDepth() const { return maxDepth_; }
 
   std::map<CacheKey, std::unique_ptr<RadianceCache>>& caches() { return caches_; }
   RadianceCache& cacheFor(const CacheKey& key);
   EngineStats& stats() { return stats_; }
+  const EngineStats& stats() const { return stats_; }
   // Pixels whose primary hit created a record (AOV "records").
   std::vector<int> recordPixels() const { return recordPixels_; }
   float footprint(const Vec3& p) const;
@@ -101,7 +105,7 @@ class CacheEngine {
   const CameraModel& camera_;
   int maxDepth_, rrDepth_;
   Vec3 lo_, hi_;
-  std::vector<int> planTech_;   // per bsdf: 0 none, 1 cache, 2 sampling
+  std::vector<Technique> planTech_;  // per bsdf: a cached technique with a table, else sampling
   std::vector<int> planOrder_;  // per bsdf: record order
   std::vector<bool> twoSided_;
   std::map<CacheKey, std::unique_ptr<RadianceCache>> caches_;
@@ -111,8 +115,24 @@ class CacheEngine {
 
   void ensureCoverage(const CacheKey& key, const std::vector<ShadePoint>& pts, std::vector<Lookup>& lookups,
                       const std::vector<float>* baseLum, bool adaptive, float relaxedScale = 1.0f);
+  // The steps of ensureCoverage: look up points `todo`; which points to look up again after
+  // insertions shrank records; which uncovered points become the next batch's candidates.
+  void lookUp(RadianceCache& cache, const std::vector<ShadePoint>& pts, const std::vector<size_t>& todo,
+              std::vector<Lookup>& lookups, float relaxedScale);
+  std::vector<size_t> pointsToRecheck(const std::vector<Lookup>& lookups, std::vector<uint32_t>& shrunk,
+                                      float relaxedScale);
+  std::vector<ShadePoint> recordCandidates(const std::vector<ShadePoint>& pts, std::vector<size_t> uncovered,
+                                           float sepPx) const;
   // Returns the ids of older records whose radius the new ones' neighbour clamping lowered.
   std::vector<uint32_t> buildRecords(const CacheKey& key, const std::vector<ShadePoint>& cands);
+  // The steps of buildRecords: the projection batch of the candidates (stratified ray pattern,
+  // per-record azimuth), their rays traced and shaded into it, one record's radius clamped.
+  ProjectBatch recordBatch(const CacheKey& key, const std::vector<ShadePoint>& cands);
+  void traceRecordRays(const std::vector<ShadePoint>& cands, ProjectBatch& rayBatch, std::vector<Hit>& hits);
+  // R_i from the harmonic mean distance of its S ray hits, bounded by the gradient limit and
+  // r_min/r_max; scales the record's gradients (in place) when r_min overrides the limit.
+  RecordInfo clampRecord(const CacheKey& key, const ShadePoint& cand, const Hit* hits, int S, float minDistance,
+                         float* lambda, float* gradT, float* gradB) const;
   void interpolateAndShade(const CacheKey& key, const std::vector<ShadePoint>& pts, const std::vector<Lookup>& lookups,
                            std::vector<Color>& out);
   // The batched path of interpolateAndShade: interpolate and brdf_dot kernels.
@@ -120,6 +140,14 @@ class CacheEngine {
                               const std::vector<Lookup>& lookups, std::vector<Color>& out);
   bool adaptiveCheck(const CacheKey& key, const std::vector<ShadePoint>& pts, const std::vector<Lookup>& lookups,
                      const std::vector<float>& baseLum);
+  std::vector<Color> recordPredictions(const CacheKey& key, const std::vector<ShadePoint>& pts,
+                                       const std::vector<size_t>& pairPoint, const std::vector<RcContribution>& pairEntry);
+  // Lowers a_i of records (id → new a_i) within their floors; true when any changed.
+  bool shrinkRecords(const CacheKey& key, const std::map<uint32_t, float>& shrink);
+  // An interpolate batch's header for `points` points (frames and offsets sized, zero) and the
+  // coefficients (and, in record-frame mode, frames) of records `ids` of `cache`.
+  InterpolateBatch interpolateBatch(int order, bool world, size_t points) const;
+  void addRecords(const RadianceCache& cache, const std::vector<uint32_t>& ids, InterpolateBatch& interp) const;
   void continuePaths(const std::vector<ShadePoint>& pts, std::vector<Color>& out, float relaxedScale);
   void shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, size_t count, int order,
                    const std::vector<float>& lambda, std::vector<Color>& out, const std::vector<size_t>* outIndex);

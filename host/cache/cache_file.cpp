@@ -6,7 +6,9 @@
 #include <sstream>
 
 #include "brdf/table_cache.h"
+#include "cache/world_frame.h"
 #include "core/atomic_file.h"
+#include "core/binary_writer.h"
 #include "core/error.h"
 
 namespace rc {
@@ -14,14 +16,6 @@ namespace rc {
 namespace {
 
 constexpr char kMagic[8] = {'R', 'C', 'C', 'A', 'C', 'H', 'E', '1'};
-
-template <typename T>
-void put(std::string& s, const T& v) {
-  s.append(reinterpret_cast<const char*>(&v), sizeof(T));
-}
-void putFloats(std::string& s, const std::vector<float>& v) {
-  s.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(float));
-}
 
 struct Reader {
   const std::string& data;
@@ -162,6 +156,30 @@ std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expe
   }
   if (r.pos + 8 != data.size()) throw Error(path + ": cache file has trailing bytes");
   return entries;
+}
+
+size_t loadCachesInto(CacheEngine& engine, const std::string& path, uint64_t sceneHash, bool worldFrame,
+                      ShBackend& backend) {
+  size_t loaded = 0;
+  for (CacheFileEntry& e : loadCacheFile(path, sceneHash)) {
+    RadianceCache& cache = engine.cacheFor(e.key);
+    WorldCopies world;
+    if (worldFrame && !e.infos.empty()) world = rotateToWorld(backend, e.key.order, e.infos, e.lambda, e.gradT, e.gradB);
+    loaded += e.infos.size();
+    cache.insert(e.infos, e.lambda, e.gradT, e.gradB, world.lambda, world.gradT, world.gradB, false);
+  }
+  return loaded;
+}
+
+void saveCaches(CacheEngine& engine, const std::string& path, uint64_t sceneHash) {
+  std::vector<CacheFileEntry> entries;
+  for (auto& [key, cache] : engine.caches()) {
+    CacheFileEntry e;
+    e.key = key;
+    cache->snapshot(e.infos, e.lambda, e.gradT, e.gradB);
+    entries.push_back(std::move(e));
+  }
+  saveCacheFile(path, sceneHash, entries);
 }
 
 }  // namespace rc

@@ -18,6 +18,8 @@
 
 namespace rc {
 
+class ShBackend;
+
 constexpr uint32_t kCacheFileVersion = 1;
 
 struct CacheFileEntry {
@@ -30,5 +32,13 @@ uint64_t cacheSceneHash(const Scene& scene, int maxDepth, bool tlMode);
 void saveCacheFile(const std::string& path, uint64_t sceneHash, const std::vector<CacheFileEntry>& entries);
 // Throws rc::Error("<path>: ...") on any problem.
 std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expectedSceneHash);
+
+// Phase 1b of an rcache render (--cache-load): inserts every record of the file into the engine's
+// caches as it is (the file holds final, already clamped radii), with world-frame copies when
+// `worldFrame`. Returns the number of records loaded.
+size_t loadCachesInto(CacheEngine& engine, const std::string& path, uint64_t sceneHash, bool worldFrame,
+                      ShBackend& backend);
+// Phase 5 (--cache-save): writes every record of the engine's caches.
+void saveCaches(CacheEngine& engine, const std::string& path, uint64_t sceneHash);
 
 }  // namespace rc

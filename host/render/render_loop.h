@@ -45,10 +45,6 @@ struct SampleInput {
 };
 using SampleFn = std::function<Color(const SampleInput& in, Rng& rng, TileFilm& tile)>;
 
-// Per-tile work for integrators that batch (the cache's final gather): the callback renders the
-// whole tile itself, splatting into `tile`; use pixelRng() for the per-sample streams.
-using TileFn = std::function<void(TileFilm& tile)>;
-
 RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
                                const SampleFn& fn);
 // Per-row batched work (the path tracer's wavefront core): the radiance of n samples at once,
@@ -57,8 +53,6 @@ RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const Rende
 using BatchFn = std::function<void(const SampleInput* in, Rng* rngs, size_t n, Color* out)>;
 RenderLoopResult renderSampleBatches(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
                                      const BatchFn& fn);
-RenderLoopResult renderTiles(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
-                             const TileFn& fn);
 
 // The RNG of sample `sampleIndex` of pixel (px, py) of an image `width` wide; with lowDiscrepancy
 // its first Rng::kPixelLowDiscrepancyDims draws are the pixel's padded Sobol points.

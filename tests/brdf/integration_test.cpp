@@ -9,6 +9,7 @@
 #include "brdf/table_layout.h"
 #include "brute_force.h"
 #include "bsdf/bsdf_factory.h"
+#include "common/property_builders.h"
 #include "core/rng.h"
 #include "sh/reference.h"
 #include "sh/sh_basis.h"
@@ -17,18 +18,8 @@
 namespace rc {
 namespace {
 
-Property floatProp(double v) {
-  Property p;
-  p.type = Property::Type::Float;
-  p.number = v;
-  return p;
-}
-Property stringProp(const std::string& s) {
-  Property p;
-  p.type = Property::Type::String;
-  p.text = s;
-  return p;
-}
+using test::floatProp;
+using test::stringProp;
 
 BsdfPtr roughConductor(const std::string& distribution, double alpha) {
   Properties props;
@@ -137,7 +128,7 @@ TEST(BrdfIntegration, RealBsdfsDotProductMatchesDirectIntegral) {
   std::vector<BsdfPtr> scene{roughConductor("ggx", 0.1), roughConductor("beckmann", 0.3), roughPlastic(0.2), diffuse()};
   BrdfTableSet set;
   set.build(scene, testOptions(dir));
-  EXPECT_EQ(set.plans()[3].technique, kTechniqueIrradianceCache);
+  EXPECT_EQ(set.plans()[3].technique, Technique::IrradianceCache);
   Rng rng(5);
   std::vector<double> L(48);
   for (int i = 0; i < 48; ++i) L[i] = i % 16 == 0 ? std::sqrt(4 * kPiD) : 0.3 * (2 * rng.nextDouble() - 1);
@@ -187,12 +178,12 @@ TEST(BrdfIntegration, RealBsdfOrdersMonotone) {
     set.build(scene, o);
     int previous = 0;
     for (const MaterialPlan& p : set.plans()) {
-      const int order = p.technique == kTechniqueImportanceSampling ? 17 : p.shOrder;
+      const int order = p.technique == Technique::ImportanceSampling ? 17 : p.shOrder;
       EXPECT_GE(order, previous) << dist << " " << p.name;
       previous = order;
     }
-    EXPECT_EQ(set.plans().front().technique, kTechniqueRadianceCache) << dist;
-    EXPECT_EQ(set.plans().back().technique, kTechniqueImportanceSampling) << dist;
+    EXPECT_EQ(set.plans().front().technique, Technique::RadianceCache) << dist;
+    EXPECT_EQ(set.plans().back().technique, Technique::ImportanceSampling) << dist;
   }
   std::filesystem::remove_all(dir);
 }

@@ -47,7 +47,7 @@ TEST(MerlTables, TwinGetsTheOrderAndTableOfItsAnalyticBsdf) {
     // The sharp ones (GGX α = 0.2, the mix's α = 0.08) exceed order 16 and go to importance sampling
     // as their analytic BSDFs do.
     EXPECT_EQ(pt.technique, pa.technique) << name;
-    if (std::string(name) == "beckmann") EXPECT_EQ(pt.technique, kTechniqueRadianceCache);
+    if (std::string(name) == "beckmann") EXPECT_EQ(pt.technique, Technique::RadianceCache);
     EXPECT_LE(std::abs(pa.shOrder - pt.shOrder), 1) << name << " analytic " << pa.shOrder << " twin " << pt.shOrder;
 
     BrdfTableOptions fixed = options(dir.path);
@@ -78,7 +78,7 @@ TEST(MerlTables, NonAnalyticMaterialGetsAnOrderFromItsBandwidth) {
   const BrdfTableOptions o = options(dir.path);
   set.build({test::merlTwin("retro")}, o);
   const MaterialPlan& p = set.plans()[0];
-  EXPECT_EQ(p.technique, kTechniqueRadianceCache);
+  EXPECT_EQ(p.technique, Technique::RadianceCache);
   EXPECT_GE(p.shOrder, 2);
   EXPECT_LE(p.shOrder, o.maxOrder);
   EXPECT_LE(p.truncationError, o.tolerance);

@@ -66,17 +66,17 @@ TEST(BrdfPlan, TechniquesPerMaterial) {
   set.build(mixedScene(), smallOptions(dir.path, &notices));
   const auto& p = set.plans();
   ASSERT_EQ(p.size(), 5u);
-  EXPECT_EQ(p[0].technique, kTechniqueIrradianceCache);
+  EXPECT_EQ(p[0].technique, Technique::IrradianceCache);
   EXPECT_EQ(p[0].shOrder, 3);
-  EXPECT_EQ(p[1].technique, kTechniqueRadianceCache);
+  EXPECT_EQ(p[1].technique, Technique::RadianceCache);
   EXPECT_GE(p[1].shOrder, 3);
   EXPECT_EQ(p[1].tableKind, RC_TABLE_ISOTROPIC_1D);
   EXPECT_LE(p[1].truncationError, 0.10);
-  EXPECT_EQ(p[2].technique, kTechniqueImportanceSampling);
+  EXPECT_EQ(p[2].technique, Technique::ImportanceSampling);
   EXPECT_EQ(p[2].tableIndex, -1);
-  EXPECT_EQ(p[3].technique, kTechniqueRadianceCache);
+  EXPECT_EQ(p[3].technique, Technique::RadianceCache);
   EXPECT_EQ(p[3].tableKind, RC_TABLE_ANISOTROPIC_2D);
-  EXPECT_EQ(p[4].technique, kTechniqueImportanceSampling);
+  EXPECT_EQ(p[4].technique, Technique::ImportanceSampling);
   EXPECT_EQ(p[4].tableIndex, -1);
   ASSERT_EQ(set.tables().size(), 3u);
   size_t floats = 0;
@@ -101,7 +101,7 @@ TEST(BrdfPlan, NothingCachedBuildsNothing) {
   set.build({std::make_shared<test::TestMirror>()}, smallOptions(sub, nullptr));
   EXPECT_TRUE(set.tables().empty());
   EXPECT_TRUE(set.data().empty());
-  EXPECT_EQ(set.plans().at(0).technique, kTechniqueImportanceSampling);
+  EXPECT_EQ(set.plans().at(0).technique, Technique::ImportanceSampling);
   EXPECT_FALSE(fs::exists(sub));  // not even the cache directory is created
 }
 
@@ -234,7 +234,7 @@ TEST(BrdfCache, UnwritableDirectoryWorksWithoutCache) {
   set.build({test::ggx(0.5f)}, smallOptions(blocker + "/cache", &notices));
   ASSERT_EQ(notices.size(), 1u);
   EXPECT_NE(notices[0].find("without the disk cache"), std::string::npos);
-  EXPECT_EQ(set.plans()[0].technique, kTechniqueRadianceCache);
+  EXPECT_EQ(set.plans()[0].technique, Technique::RadianceCache);
   EXPECT_FALSE(set.tables().empty());
   EXPECT_TRUE(set.cacheDirectory().empty());
 }

@@ -1,0 +1,225 @@
+#include "cache/final_pass.h"
+
+#include <algorithm>
+
+#include "cache/rng_salts.h"
+#include "core/error.h"
+#include "core/parallel.h"
+#include "render/direct_light.h"
+#include "render/render_loop.h"
+#include "scene/integrator_params.h"
+
+namespace rc {
+
+namespace {
+
+// Samples per band (≥): fewer engine calls (each a few kernel launches) at high spp; ~14 MB of
+// primaries per band.
+constexpr size_t kSamplesPerBand = 65536;
+// A jittered sample that no record covers (the fill covered pixel centres) first tries the
+// records covering it at twice their radius, before a record is made for it (which means shading
+// earlier bands again). A sample is at most 0.71 px from its pixel's centre and records reach at
+// least r_min = 1.5 px, so on flat surfaces the relaxed lookup nearly always succeeds; the
+// interpolation weights are the same formula with a doubled a.
+constexpr float kFinalRelaxedScale = 2.0f;
+// Reshading rounds over the bands are capped: records only grow and a reshaded band finds its
+// points covered, so a third round has not been seen; the cap only bounds time.
+constexpr int kMaxBandRounds = 4;
+// Samples of one pixel on surfaces whose normals agree this closely share one cache lookup.
+constexpr float kSharedLookupMinCos = 0.995f;
+
+}  // namespace
+
+RcacheAovs parseRcacheAovs(const std::vector<std::string>& names) {
+  RcacheAovs a;
+  for (const std::string& n : names) {
+    if (n == "records") a.records = true;
+    else if (n == "radius") a.radius = true;
+    else if (n == "technique") a.technique = true;
+    else if (n == "contributors") a.contributors = true;
+    else throw Error("rcache: unknown AOV '" + n + "' (known: records, radius, technique, contributors)");
+  }
+  return a;
+}
+
+FinalPass::FinalPass(const RcacheRun& run, const RcacheAovs& aovs, Film& film, AdaptivePixels& adaptive)
+    : run_(run), aovs_(aovs), film_(film), adaptive_(adaptive) {
+  rowsPerBand_ = std::max(1, static_cast<int>(kSamplesPerBand / std::max(1, run.width * run.spp)));
+  bands_ = (run.height + rowsPerBand_ - 1) / rowsPerBand_;
+  bandFilms_.resize(static_cast<size_t>(bands_));
+}
+
+void FinalPass::shadeBand(int band) {
+  const int W = run_.width;
+  const int y0 = band * rowsPerBand_, y1 = std::min(run_.height, y0 + rowsPerBand_);
+  const size_t begin = static_cast<size_t>(y0) * W, end = static_cast<size_t>(y1) * W;
+  auto tile = std::make_unique<TileFilm>(film_.makeTile(0, y0, W, y1));
+  adaptive_.restart(begin, end);
+  shadeSamples(y0, adaptive_.ranges().data() + begin, end - begin, *tile);
+  bandFilms_[static_cast<size_t>(band)] = std::move(tile);
+}
+
+// A band shaded before records were created elsewhere may have missed them; it is shaded again
+// until every band saw the final caches (usually one extra round over the bands up to the last
+// one that created records, often none).
+void FinalPass::shadeBands(bool& interrupted) {
+  std::vector<size_t> shadedWith(static_cast<size_t>(bands_), 0);  // record count when last shaded
+  for (int round = 0; round < kMaxBandRounds && !interrupted; ++round) {
+    bool any = false;
+    for (int band = 0; band < bands_ && !interrupted; ++band) {
+      if (round > 0 && shadedWith[static_cast<size_t>(band)] == run_.totalRecords()) continue;
+      if (run_.cancelled()) {
+        interrupted = true;
+        break;
+      }
+      shadeBand(band);
+      shadedWith[static_cast<size_t>(band)] = run_.totalRecords();
+      if (round > 0) ++reshaded_;
+      any = true;
+      if (run_.ctx.progress && round == 0) run_.ctx.progress("render", double(band + 1), double(bands_));
+    }
+    if (!any) break;
+  }
+}
+
+void FinalPass::mergeBands() {
+  for (auto& t : bandFilms_)
+    if (t) film_.merge(*t);
+}
+
+void FinalPass::shadeSamples(int y0, const SampleRange* ranges, size_t pixels, TileFilm& tile) {
+  std::vector<size_t> offset(pixels + 1, 0);
+  // The pixels that take samples: all in a band's first round, a few in adaptive rounds (which
+  // then do not walk the empty ones).
+  std::vector<uint32_t> active;
+  for (size_t q = 0; q < pixels; ++q) {
+    offset[q + 1] = offset[q] + static_cast<size_t>(ranges[q].count());
+    if (ranges[q].count() > 0) active.push_back(static_cast<uint32_t>(q));
+  }
+  const size_t n = offset[pixels];
+  if (n == 0) return;
+  Samples s;
+  traceAndLight(y0, ranges, offset, active, s);
+  cameraRays_ += n;
+  // Representatives in sample order (the order is what makes the image independent of threads).
+  std::vector<size_t> slot(n, 0);
+  std::vector<ShadePoint> repPts;
+  for (size_t i = 0; i < n; ++i)
+    if (s.rep[i] == i) {
+      slot[i] = repPts.size();
+      repPts.push_back(s.prim[i].sp);
+    }
+  std::vector<Color> repIndirect;
+  std::vector<LookupAov> repAov;
+  run_.engine.indirect(repPts, repIndirect, &repAov, kFinalRelaxedScale);
+  splat(s, repIndirect, repAov, slot, tile);
+}
+
+// Cached indirect light is smooth (the cache itself interpolates over ≥ r_min pixels), so the
+// samples of one pixel that land on the same surface share one lookup at the first of them;
+// direct light, emission and importance-sampled (sharp) materials stay per sample, so edges,
+// shadows and sharp reflections keep their anti-aliasing. share_pixel=false: one lookup per
+// sample. rep[i] = the sample whose lookup sample i uses. Everything per pixel runs in parallel
+// over pixels.
+void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vector<size_t>& offset,
+                              const std::vector<uint32_t>& active, Samples& s) {
+  const int W = run_.width, maxDepth = run_.engine.maxDepth();
+  const RcacheParams& params = run_.params;
+  const size_t n = offset.back();
+  s.prim.resize(n);
+  s.direct.assign(n, Color(0.0f));
+  s.sampleIndex.resize(n);
+  s.rep.resize(n);
+  parallelFor(active.size(), 16, [&](size_t jb, size_t je) {
+    std::vector<uint32_t> pixelReps;
+    uint64_t lightOnlyCount = 0;
+    // One stream per sample: camera, then direct light, then (importance-sampled materials) the
+    // continuation's BSDF sample, all from the pixel's low-discrepancy dimensions where the
+    // sampler is ldsampler. The chunk's camera rays are traced first, as one coherent stream.
+    const size_t first = offset[active[jb]], count = offset[active[je - 1] + 1] - first;
+    std::vector<Rng> rngs;
+    rngs.reserve(count);
+    std::vector<Ray> rays(count);
+    std::vector<Hit> hits(count);
+    std::vector<Vec2> filmPos(count);
+    for (size_t j = jb; j < je; ++j) {
+      const size_t q = active[j];
+      const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
+      for (int si = ranges[q].first; si < ranges[q].end; ++si) {
+        const size_t k = offset[q] + (si - ranges[q].first) - first;
+        rngs.push_back(pixelRng(run_.seed, W, x, y, si, run_.lowDiscrepancy));
+        filmPos[k] = Vec2(static_cast<float>(x), static_cast<float>(y)) + rngs[k].next2D();
+        rays[k] = run_.camera.generate(filmPos[k]);
+      }
+    }
+    run_.ctx.accel.intersect(rays.data(), hits.data(), count, true);
+    for (size_t j = jb; j < je; ++j) {
+      const size_t q = active[j];
+      const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
+      pixelReps.clear();
+      for (int si = ranges[q].first; si < ranges[q].end; ++si) {
+        const size_t i = offset[q] + (si - ranges[q].first), k = i - first;
+        s.sampleIndex[i] = si;
+        Rng& rng = rngs[k];
+        const uint64_t sampleSeed = hashMix(run_.seed, static_cast<uint64_t>(y) * W + x, kSaltFinalSample + si);
+        s.prim[i] = run_.primaries.of(filmPos[k], y * W + x, sampleSeed, rays[k], hits[k]);
+        ShadePoint& sp = s.prim[i].sp;
+        if (sp.active && withinMaxDepth(maxDepth, 2)) {
+          const Bsdf& bsdf = *run_.ctx.scene.bsdfs[sp.hit.bsdf];
+          sp.lightSamples = params.lightSamples;
+          bool lightOnly = false;
+          // Importance-sampled points: the continuation's ray doubles as the BSDF sample.
+          s.direct[i] = run_.engine.continuesPath(sp)
+                            ? lightStrategyMis(run_.ctx, sp.hit, sp.frame, sp.wo, bsdf, rng, params.lightSamples)
+                            : directLightCheapest(run_.ctx, sp.hit, sp.frame, sp.wo, bsdf, rng, params.lightSamples,
+                                                  &lightOnly);
+          if (lightOnly) ++lightOnlyCount;
+        }
+        continueLowDiscrepancy(sp, rng);
+        s.rep[i] = static_cast<uint32_t>(i);
+        const bool cached = sp.active && isCached(run_.engine.technique(sp));
+        if (params.sharePixel && cached) {
+          for (uint32_t r : pixelReps) {
+            const ShadePoint& o = s.prim[r].sp;
+            if (o.hit.bsdf == sp.hit.bsdf && o.hit.mesh == sp.hit.mesh && o.hit.sphere == sp.hit.sphere &&
+                glm::dot(o.frame.n, sp.frame.n) > kSharedLookupMinCos) {
+              s.rep[i] = r;
+              break;
+            }
+          }
+        }
+        if (s.rep[i] == i && cached) pixelReps.push_back(static_cast<uint32_t>(i));
+      }
+    }
+    directLightOnly_ += lightOnlyCount;
+  });
+}
+
+void FinalPass::splat(const Samples& s, const std::vector<Color>& repIndirect, const std::vector<LookupAov>& repAov,
+                      const std::vector<size_t>& slot, TileFilm& tile) {
+  const int W = run_.width;
+  for (size_t i = 0; i < s.prim.size(); ++i) {
+    const ShadePoint& sp = s.prim[i].sp;
+    const LookupAov& la = repAov[slot[s.rep[i]]];
+    const Color L = s.prim[i].Le + s.direct[i] + repIndirect[slot[s.rep[i]]];
+    const int px = sp.pixel % W, py = sp.pixel / W;
+    if (isFinite(L)) {
+      tile.splat(s.prim[i].filmPos, L);
+      adaptive_.add(static_cast<size_t>(sp.pixel), s.sampleIndex[i], L);
+    } else {
+      ++nanSamples_;
+    }
+    if (aovs_.radius) tile.addAov("radius", px, py, Color(la.meanA, la.meanRadiusPx, 0.0f));
+    if (aovs_.contributors) tile.addAov("contributors", px, py, Color(float(la.contributors)));
+    if (aovs_.technique) {
+      const Technique t = run_.engine.technique(sp);
+      const Color c = t == Technique::ImportanceSampling ? Color(1, 0, 0)
+                      : t == Technique::IrradianceCache  ? Color(0, 1, 0)
+                      : t == Technique::RadianceCache    ? Color(0, 0, 1)
+                                                         : Color(0.0f);
+      tile.addAov("technique", px, py, c);
+    }
+  }
+}
+
+}  // namespace rc

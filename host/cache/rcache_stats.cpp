@@ -1,0 +1,124 @@
+#include "cache/rcache_stats.h"
+
+#include <algorithm>
+
+#include "cl/sh_backend.h"
+#include "core/json_writer.h"
+
+namespace rc {
+
+namespace {
+
+void reportTimes(const RcacheRun& run, const RcacheReport& r, RenderStats& stats) {
+  const EngineStats& es = run.engine.stats();
+  const double fillS = r.fill.seconds;
+  stats.set("time_s", r.totalS);
+  stats.set("time_brdf_tables_s", r.tablesS);
+  stats.set("time_cache_fill_s", fillS);
+  stats.set("time_final_pass_s", r.finalS);
+  stats.setJson("fill_passes", r.fill.passesJson);
+  stats.set("fill_edge_pixels_fraction", double(r.fill.edgePixels) / (double(run.width) * run.height));
+  const double leaf = es.projection_s + es.interpolation_s + es.dot_s;
+  stats.set("time_sampling_s", std::max(0.0, fillS + r.finalS - leaf - es.adaptive_s));
+  stats.set("time_projection_s", es.projection_s);
+  stats.set("time_interpolation_s", es.interpolation_s);
+  stats.set("time_dot_s", es.dot_s);
+  stats.set("time_adaptive_check_s", es.adaptive_s);
+}
+
+void reportRecords(const RcacheRun& run, const RcacheReport& r, RenderStats& stats) {
+  size_t records = 0, glossyRecords = 0, level0 = 0;
+  JsonWriter caches;
+  caches.beginArray();
+  for (auto& [key, cache] : run.engine.caches()) {
+    records += cache->size();
+    if (key.order > 3) glossyRecords += cache->size();
+    if (key.level == 0) level0 += cache->size();
+    caches.beginObject()
+        .field("level", key.level)
+        .field("depth", key.depth)
+        .field("order", key.order)
+        .field("records", cache->size())
+        .endObject();
+  }
+  caches.endArray();
+  stats.set("records", double(records));
+  stats.set("records_primary", double(level0));
+  stats.set("records_loaded", double(r.recordsLoaded));
+  stats.set("records_glossy", double(glossyRecords));
+  stats.setJson("caches", caches.str());
+}
+
+void reportRaysAndLookups(const RcacheRun& run, const RcacheReport& r, RenderStats& stats) {
+  const EngineStats& es = run.engine.stats();
+  const Accel& accel = run.ctx.accel;
+  const uint64_t cameraRays = r.pass.cameraRays();
+  stats.set("rays_record", double(es.recordRays.load()));
+  stats.set("rays_camera", double(cameraRays));
+  reportAdaptiveSampling(stats, run.ctx.options.adaptive, run.spp, r.adaptive.totalSamples(),
+                         r.adaptive.pixelsAboveSpp(), r.adaptive.maxSamples(), double(run.width) * run.height);
+  stats.set("rays_path", double(es.pathRays.load()));
+  stats.set("rays_total", double(accel.raysTraced()));
+  // "rays" and "rays_per_s" carry the same meaning as in the path tracer's statistics.
+  stats.set("rays", double(accel.raysTraced()));
+  stats.set("rays_per_s", r.totalS > 0 ? double(accel.raysTraced()) / r.totalS : 0.0);
+  stats.set("lookups", double(es.lookups.load()));
+  stats.set("records_per_lookup", es.lookups ? double(es.contributions.load()) / double(es.lookups.load()) : 0.0);
+  stats.set("adaptive_shrinks", double(es.adaptiveShrinks.load()));
+  stats.set("samples_dropped_nan", double(es.droppedSamples.load() + r.pass.nanSamples()));
+  stats.set("bands_reshaded", double(r.pass.bandsReshaded()));
+  stats.set("direct_light_only_fraction", cameraRays ? double(r.pass.directLightOnly()) / double(cameraRays) : 0.0);
+}
+
+void reportKernels(const RcacheRun& run, RenderStats& stats) {
+  const ShBackend& backend = *run.ctx.backend;
+  const KernelTimes& kt = backend.times();
+  stats.set("kernel_project_s", kt.project_s);
+  stats.set("kernel_rotate_s", kt.rotate_s);
+  stats.set("kernel_interpolate_s", kt.interpolate_s);
+  stats.set("kernel_brdf_dot_s", kt.brdfDot_s);
+  stats.set("kernel_programs", kt.programs);
+  stats.set("kernel_programs_cached", kt.programsFromBinaryCache);
+  stats.setText("device", backend.deviceName());
+}
+
+void reportModes(const RcacheRun& run, RenderStats& stats) {
+  const EngineStats& es = run.engine.stats();
+  const RcacheParams& p = run.params;
+  stats.setText("sampler", run.lowDiscrepancy ? "ldsampler" : "independent");
+  stats.setText("interpolation_frame", p.autoFrame ? "auto" : p.worldFrame ? "world" : "record");
+  stats.set("lookups_record_frame", double(es.recordFrameLookups.load()));
+  stats.set("lookups_relaxed", double(es.relaxedLookups.load()));
+  stats.set("lookups_lambertian", double(es.lambertianLookups.load()));
+  stats.setText("mode", p.tlMode ? "tl (Tabellion-Lamorlette dominant direction)" : "radiance");
+  stats.setJson("materials", run.tables.materialsJson());
+}
+
+// What the render did not do, and why.
+std::string skippedWork(const RcacheRun& run) {
+  std::string skipped;
+  bool anyGlossy = false, anyCached = false;
+  for (const auto& p : run.tables.plans()) {
+    anyGlossy |= p.technique == Technique::RadianceCache;
+    anyCached |= p.tableIndex >= 0;
+  }
+  if (!anyGlossy) skipped += "no glossy material: no glossy radiance cache, no glossy BRDF tables; ";
+  if (!anyCached) skipped += "no cached material: no BRDF tables, no records; ";
+  if (!run.ctx.options.cacheLoad.empty())
+    skipped += "cache fill passes (cache loaded from " + run.ctx.options.cacheLoad + "); ";
+  return skipped.empty() ? "nothing" : skipped;
+}
+
+}  // namespace
+
+void reportRcacheStats(const RcacheRun& run, const RcacheReport& report, RenderStats& stats) {
+  reportTimes(run, report, stats);
+  reportRecords(run, report, stats);
+  reportRaysAndLookups(run, report, stats);
+  reportKernels(run, stats);
+  reportModes(run, stats);
+  stats.setText("skipped", skippedWork(run));
+  if (report.interrupted) stats.set("interrupted", 1.0);
+}
+
+}  // namespace rc
