@@ -1,6 +1,6 @@
 #include "app/cli.h"
 
-#include <unistd.h>
+#include <signal.h>
 
 #include <atomic>
 #include <chrono>
@@ -11,6 +11,7 @@
 
 #include "app/cli_args.h"
 #include "app/diff_command.h"
+#include "app/output_checks.h"
 #include "app/progress_bar.h"
 #include "app/stats_report.h"
 #include "cache/cache_params.h"
@@ -21,8 +22,6 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "geometry/accel.h"
-#include "image/image_file.h"
-#include "image/oiio_module.h"
 #include "render/image_io.h"
 #include "render/light_sampler.h"
 #include "render/path_integrator.h"
@@ -33,10 +32,28 @@ namespace rc {
 namespace {
 
 std::atomic<bool> gCancel{false};
+std::atomic<int> gSignal{0};
 
-extern "C" void onInterrupt(int) {
-  // Second Ctrl-C: the user insists, leave immediately.
-  if (gCancel.exchange(true)) std::_Exit(130);
+// SIGINT and SIGTERM alike: the first stops the render early (the partial image is still written,
+// and a write in progress finishes); a second one means leave now, removing any temporary file.
+extern "C" void onStopSignal(int sig) {
+  int none = 0;
+  gSignal.compare_exchange_strong(none, sig);
+  if (gCancel.exchange(true)) {
+    removeRegisteredTemporaries();
+    std::_Exit(128 + gSignal.load());
+  }
+}
+
+void installSignalHandlers() {
+  struct sigaction sa {};
+  sa.sa_handler = onStopSignal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+  // A file-size limit (ulimit -f) is a full disk by another name: let write(2) fail with EFBIG
+  // and report it, rather than die of SIGXFSZ with a temporary left behind.
+  std::signal(SIGXFSZ, SIG_IGN);
 }
 
 using Clock = std::chrono::steady_clock;
@@ -49,19 +66,6 @@ std::string defaultOutputPath(const std::string& scenePath) {
   return scenePath + ".exr";
 }
 
-// Fails before a long render rather than after it: the format must be known and the directory writable.
-void checkOutputWritable(const std::string& path) {
-  const std::string ext = lowerExtension(path);
-  if (ext != ".exr" && ext != ".png" && ext != ".hdr")
-    throw Error(path + ": unsupported output format (use .exr, .png or .hdr)");
-  // PNG and HDR are written through the OpenImageIO module: load it now, so that a missing module
-  // is an error before the render instead of after it.
-  if (ext != ".exr") oiioModule();
-  const size_t slash = path.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
-  if (access(dir.c_str(), W_OK) != 0) throw Error(path + ": directory '" + dir + "' is not writable");
-}
-
 bool sceneHasCachedMaterial(const Scene& scene) {
   for (const BsdfPtr& b : scene.bsdfs)
     if (b && (b->lobes() & (kLobeDiffuse | kLobeGlossy))) return true;
@@ -72,13 +76,8 @@ int runRender(const std::vector<std::string>& args) {
   RenderArgs ra = parseRenderArgs(args);
   if (ra.threads > 0) setThreadCount(ra.threads);
   const std::string output = ra.outputPath.empty() ? defaultOutputPath(ra.scenePath) : ra.outputPath;
-  checkOutputWritable(output);
-  for (const std::string* p : {&ra.statsPath, &ra.cacheSave})
-    if (!p->empty()) {
-      const size_t slash = p->find_last_of('/');
-      const std::string dir = slash == std::string::npos ? "." : p->substr(0, slash);
-      if (access(dir.c_str(), W_OK) != 0) throw Error(*p + ": directory '" + dir + "' is not writable");
-    }
+  checkOutputs(ra, output);
+  installSignalHandlers();
 
   RenderStats stats;
   const auto tStart = Clock::now();
@@ -93,6 +92,7 @@ int runRender(const std::vector<std::string>& args) {
   for (const auto& kv : ra.defines)
     if (isIntegratorParamName(kv.first)) scene.integrator.params[kv.first] = kv.second;
   const double loadS = secondsSince(tStart);
+  if (gCancel) return 128 + gSignal.load();  // stopped while loading: nothing rendered to keep
 
   const auto tBvh = Clock::now();
   Accel accel(scene);
@@ -127,11 +127,9 @@ int runRender(const std::vector<std::string>& args) {
   RenderContext ctx{scene, accel, lights, opts, backend.get(), &gCancel,
                     [&bar](const std::string& phase, double done, double total) { bar.update(phase, done, total); }};
 
-  std::signal(SIGINT, onInterrupt);
   const auto tRender = Clock::now();
   Image image = integrator->render(ctx, stats);
   const double renderS = secondsSince(tRender);
-  std::signal(SIGINT, SIG_DFL);
   bar.finish();
 
   const auto tWrite = Clock::now();
@@ -153,9 +151,12 @@ int runRender(const std::vector<std::string>& args) {
   if (gCancel) stats.set("interrupted", 1);
   if (!ra.quiet) printStats(stats, std::cout);
   if (!ra.statsPath.empty()) writeFileAtomically(ra.statsPath, statsToJson(stats));
+  // A failed cache save does not cost the image: it was written above, the failure is reported now.
+  const std::string cacheError = stats.text("cache_save_error");
+  if (!cacheError.empty()) throw Error(cacheError);
   if (gCancel) {
     std::cerr << "interrupted: wrote the partial image to " << output << "\n";
-    return 130;
+    return 128 + gSignal.load();
   }
   return 0;
 }

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "cache/radius_floor.h"
 #include "cache/record_octree.h"
 #include "cl/sh_backend.h"
 #include "core/error.h"
@@ -228,9 +229,15 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
   int adaptiveRounds = 0;
   bool created = false;
   std::vector<uint32_t> shrunk;  // records whose radius clamping lowered since the last check
-  std::vector<size_t> todo(n);
-  for (size_t i = 0; i < n; ++i) todo[i] = i;
-  for (;;) {
+  std::vector<size_t> todo;
+  // Points off the float range (a hit on an overflowing sphere) cannot hold a record.
+  for (size_t i = 0; i < n; ++i)
+    if (isFinite(pts[i].hit.p)) todo.push_back(i);
+  // Each creation round covers at least the points its records were made at (radius_floor.h), so
+  // the loop ends within about 2n rounds; the bound and the cancel check are the last resort.
+  const size_t maxRounds = 2 * n + 64;
+  for (size_t round = 0; round < maxRounds && !(ctx_.cancel && ctx_.cancel->load(std::memory_order_relaxed));
+       ++round) {
     parallelFor(todo.size(), 64, [&](size_t b, size_t e) {
       const RadianceCache::Reader reader = cache.reader();
       for (size_t j = b; j < e; ++j) {
@@ -430,6 +437,7 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
     const float aL = aForLevel(key.level), levelScale = aL / params_.a;
     infos[b].R = std::min(std::max(std::min(R, Rg), params_.rMinPx * levelScale * fp / aL),
                           params_.rMaxPx * levelScale * fp / aL);
+    infos[b].R = std::max(infos[b].R, minimumReach(cands[b].hit.p, maxComponent(hi_ - lo_)) / aL);
     // The pixel-footprint floor r_min can push R past the gradient limit (records in corners,
     // where R is tiny and the gradient ~Λ/R): scale the gradient down so the bound holds at the
     // radius actually used. Without this, a record 3 px wide extrapolates a gradient meant for a

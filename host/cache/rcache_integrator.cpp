@@ -12,6 +12,7 @@
 #include "cl/sh_backend.h"
 #include "core/error.h"
 #include "core/parallel.h"
+#include "geometry/scene_bounds.h"
 #include "render/camera.h"
 #include "render/direct_light.h"
 #include "render/film.h"
@@ -37,24 +38,6 @@ constexpr size_t kPointsPerCall = 8192;
 // records reach at least r_min = 1.5 px, so on flat surfaces the relaxed lookup nearly always
 // succeeds; the interpolation weights are the same formula with a doubled a.
 constexpr float kFinalRelaxedScale = 2.0f;
-
-void sceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
-  lo = Vec3(INFINITY);
-  hi = Vec3(-INFINITY);
-  for (const Mesh& m : scene.meshes)
-    for (const Vec3& p : m.positions) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-  for (const Sphere& s : scene.spheres) {
-    lo = glm::min(lo, s.center - Vec3(s.radius));
-    hi = glm::max(hi, s.center + Vec3(s.radius));
-  }
-  if (!(lo.x <= hi.x)) {
-    lo = Vec3(-1.0f);
-    hi = Vec3(1.0f);
-  }
-}
 
 class RcacheIntegrator : public Integrator {
  public:
@@ -103,7 +86,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   const int W = film.width(), H = film.height();
   CameraModel camera(scene.camera, W, H);
   Vec3 lo, hi;
-  sceneBounds(scene, lo, hi);
+  finiteSceneBounds(scene, lo, hi);
   CacheEngine engine(ctx, params_, tables, camera, maxDepth, settings_.rrDepth, lo, hi);
   const uint64_t hash = cacheSceneHash(scene, maxDepth, params_.tlMode);
   const bool loaded = !ctx.options.cacheLoad.empty();
@@ -513,7 +496,12 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
       cache->snapshot(e.infos, e.lambda, e.gradT, e.gradB);
       entries.push_back(std::move(e));
     }
-    saveCacheFile(ctx.options.cacheSave, hash, entries);
+    // A failed save (full disk) must not lose the image: the CLI writes it, then reports this.
+    try {
+      saveCacheFile(ctx.options.cacheSave, hash, entries);
+    } catch (const Error& e) {
+      stats.setText("cache_save_error", e.what());
+    }
   }
 
   // ---- statistics ----
