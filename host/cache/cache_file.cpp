@@ -8,6 +8,7 @@
 #include "brdf/table_cache.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/regular_file.h"
 
 namespace rc {
 
@@ -111,6 +112,7 @@ void saveCacheFile(const std::string& path, uint64_t sceneHash, const std::vecto
 }
 
 std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expectedSceneHash) {
+  requireRegularFile(path, "cache file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot open cache file");
   std::stringstream ss;

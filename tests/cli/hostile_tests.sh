@@ -116,5 +116,21 @@ expect_refusal image_and_stats_collide "-o and --stats name the same file" 20 --
 expect_refusal cache_and_image_collide "-o and --cache-save name the same file" 20 -- "$DATA/tiny.xml" --cache-save same.exr -o same.exr
 [ ! -e same.exr ] && pass collisions_write_nothing || fail collisions_write_nothing "same.exr written"
 
+# --- 5. Deep nesting: a bound with file:line instead of a stack overflow.
+python3 - <<'PY'
+open("deep_elements.xml", "w").write('<scene version="3.0.0">' + "<shape type=\"sphere\">" * 100000 + "</shape>" * 100000 + "</scene>")
+open("deep_twosided.xml", "w").write('<scene version="3.0.0">\n<shape type="sphere">\n' + '<bsdf type="twosided">' * 30000 + '<bsdf type="diffuse"/>' + "</bsdf>" * 30000 + "</shape></scene>")
+PY
+expect_refusal deep_elements "deep_elements.xml:1: elements nested deeper than" 20 -- deep_elements.xml -o d.exr
+expect_refusal deep_twosided "deep_twosided.xml:3: elements nested deeper than" 20 -- deep_twosided.xml -o d.exr
+
+# --- 7. Inputs that are not regular files are refused instead of read forever.
+mkfifo mesh_fifo.obj
+add_shape fifo_mesh.xml '<shape type="obj"><string name="filename" value="mesh_fifo.obj"/></shape>'
+expect_refusal mesh_is_fifo "mesh_fifo.obj': not a regular file" 20 -- fifo_mesh.xml -o f.exr
+expect_refusal cache_is_dev_zero "cannot open cache file '/dev/zero': not a regular file" 20 -- "$DATA/tiny.xml" "${RCACHE[@]}" -o z.exr --cache-load /dev/zero
+expect_refusal cache_is_directory "cannot open cache file 'a_dir.rcc': it is a directory" 20 -- "$DATA/tiny.xml" "${RCACHE[@]}" -o z.exr --cache-load a_dir.rcc
+expect_refusal scene_is_dev_zero "cannot open scene file '/dev/zero': not a regular file" 20 -- /dev/zero -o z.exr
+
 echo "$fails failure(s)"
 [ $fails -eq 0 ]
