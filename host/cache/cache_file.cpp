@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "brdf/table_cache.h"
+#include "cache/cache_file_validation.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/regular_file.h"
@@ -147,11 +148,7 @@ std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expe
     e.infos.resize(n);
     for (RecordInfo& info : e.infos) {
       float v[14];
-      for (float& x : v) {
-        x = r.get<float>();
-        if (!std::isfinite(x)) throw Error(path + ": cache file has a non-finite record position, frame or radius");
-      }
-      if (!(v[12] > 0.0f) || !(v[13] > 0.0f)) throw Error(path + ": cache file has a record with radius or a ≤ 0");
+      for (float& x : v) x = r.get<float>();
       info.p = Vec3(v[0], v[1], v[2]);
       info.frame = Frame(Vec3(v[3], v[4], v[5]), Vec3(v[6], v[7], v[8]), Vec3(v[9], v[10], v[11]));
       info.R = v[12];
@@ -163,6 +160,7 @@ std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expe
     r.floats(e.gradB, k);
   }
   if (r.pos + 8 != data.size()) throw Error(path + ": cache file has trailing bytes");
+  validateCacheEntries(entries, path);
   return entries;
 }
 
