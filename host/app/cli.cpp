@@ -11,10 +11,10 @@
 
 #include "app/cli_args.h"
 #include "app/diff_command.h"
+#include "app/integrator_overrides.h"
 #include "app/output_checks.h"
 #include "app/progress_bar.h"
 #include "app/stats_report.h"
-#include "cache/cache_params.h"
 #include "cache/rcache_integrator.h"
 #include "cl/sh_backend.h"
 #include "cl/verify.h"
@@ -87,10 +87,6 @@ int runRender(const std::vector<std::string>& args) {
   std::vector<std::string> warnings;
   Scene scene = loadScene(ra.scenePath, lo, &warnings);
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
-  // -D also reaches the integrator's own parameters (a, rays, order, ...), overriding the file;
-  // other names are scene parameters only.
-  for (const auto& kv : ra.defines)
-    if (isIntegratorParamName(kv.first)) scene.integrator.params[kv.first] = kv.second;
   const double loadS = secondsSince(tStart);
   if (gCancel) return 128 + gSignal.load();  // stopped while loading: nothing rendered to keep
 
@@ -101,6 +97,9 @@ int runRender(const std::vector<std::string>& args) {
 
   std::string integratorName = ra.integrator;
   if (integratorName == "auto") integratorName = sceneHasCachedMaterial(scene) ? "rcache" : "path";
+  // -D also reaches the integrator's own parameters (a, rays, max_depth, ...), overriding the
+  // file; other names are scene parameters only.
+  applyIntegratorOptions(ra, integratorName, scene.integrator);
 
   std::unique_ptr<ShBackend> backend;
   std::unique_ptr<Integrator> integrator;

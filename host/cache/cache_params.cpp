@@ -17,8 +17,10 @@ float toFloat(const std::string& name, const std::string& v, float lo, float hi)
   char* end = nullptr;
   const double x = std::strtod(v.c_str(), &end);
   if (v.empty() || *end != '\0' || !std::isfinite(x)) throw bad(name, v, "not a number");
-  if (x < lo || x > hi) throw bad(name, v, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return static_cast<float>(x);
+  // Compared as float, the type of the bounds: 0.001 is the bound 1e-3f, not just below it.
+  const float f = static_cast<float>(x);
+  if (f < lo || f > hi) throw bad(name, v, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return f;
 }
 
 int toInt(const std::string& name, const std::string& v, int lo, int hi) {

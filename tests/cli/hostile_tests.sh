@@ -132,5 +132,26 @@ expect_refusal cache_is_dev_zero "cannot open cache file '/dev/zero': not a regu
 expect_refusal cache_is_directory "cannot open cache file 'a_dir.rcc': it is a directory" 20 -- "$DATA/tiny.xml" "${RCACHE[@]}" -o z.exr --cache-load a_dir.rcc
 expect_refusal scene_is_dev_zero "cannot open scene file '/dev/zero': not a regular file" 20 -- /dev/zero -o z.exr
 
+# --- 10. Nothing given is silently ignored.
+expect_refusal rr_depth_negative "-D rr_depth=-3" 20 -- "$DATA/tiny.xml" -D rr_depth=-3 -o x.exr
+expect_refusal hide_emitters_banana "-D hide_emitters=banana" 20 -- "$DATA/tiny.xml" -D hide_emitters=banana -o x.exr
+expect_refusal path_cache_save "--cache-save: only with the rcache integrator" 20 -- "$DATA/tiny.xml" --integrator path --cache-save x.rcc -o x.exr
+expect_refusal path_cache_load "--cache-load: only with the rcache integrator" 20 -- "$DATA/tiny.xml" --integrator path --cache-load x.rcc -o x.exr
+expect_refusal path_aov "--aov records: only with the rcache integrator" 20 -- "$DATA/tiny.xml" --integrator path --aov records -o x.exr
+expect_refusal path_rcache_param "-D rays=64: 'rays' is an rcache parameter" 20 -- "$DATA/tiny.xml" --integrator path -D rays=64 -o x.exr
+expect_renders a_at_its_lower_bound 20 -- "$DATA/tiny.xml" "${RCACHE[@]}" -D a=0.001 -D res=8 -o a_edge.exr
+# -D max_depth overrides a max_depth the file writes literally (tiny.xml: 4): same image as the file edited.
+sed 's|<integer name="max_depth" value="4"/>|<integer name="max_depth" value="1"/>|' "$DATA/tiny.xml" > depth1.xml
+"$RC" "$DATA/tiny.xml" --integrator path -D max_depth=1 -o md_define.exr --quiet --seed 2 -t 2 \
+  && "$RC" depth1.xml --integrator path -o md_file.exr --quiet --seed 2 -t 2
+d=$("$RC" diff md_define.exr md_file.exr --json 2>&1)
+python3 -c "import json,sys; sys.exit(0 if json.loads(sys.argv[1])['max_abs']==0 else 1)" "$d" 2>/dev/null \
+  && pass define_overrides_literal_max_depth || fail define_overrides_literal_max_depth "$d"
+# A triangle with 1e10 coordinates is not degenerate (its |cross|² overflows float, not double).
+printf 'v -1e10 0 -1e10\nv 0 0 1e10\nv 1e10 0 -1e10\nf 1 2 3\n' > huge_triangle.obj
+add_shape huge_triangle.xml '<shape type="obj"><string name="filename" value="huge_triangle.obj"/><ref id="red"/></shape>'
+expect_renders huge_triangle 20 -- huge_triangle.xml --integrator path --quiet -t 2 -o huge_triangle.exr
+finite_image huge_triangle.exr && pass huge_triangle_finite || fail huge_triangle_finite "non-finite pixels"
+
 echo "$fails failure(s)"
 [ $fails -eq 0 ]
