@@ -82,7 +82,11 @@ uint64_t cacheSceneHash(const Scene& scene, int maxDepth, bool tlMode) {
     hashFloats(h, v, 13);
     hashFloats(h, &e.direction.x, 3);
     hashFloats(h, &e.toWorld[0][0], 16);
-    h = fnv1a64(e.filename.data(), e.filename.size(), h);
+    // The envmap by its pixels, not its path: an edited image must not reuse a stale cache, and
+    // the same scene run from another directory must still find its cache.
+    const int size[2] = {e.envWidth, e.envHeight};
+    h = fnv1a64(size, sizeof(size), h);
+    if (!e.envPixels.empty()) hashFloats(h, &e.envPixels[0].x, 3 * e.envPixels.size());
   }
   const int extra[2] = {maxDepth, tlMode ? 1 : 0};
   return fnv1a64(extra, sizeof(extra), h);

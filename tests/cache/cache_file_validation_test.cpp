@@ -101,5 +101,22 @@ TEST_F(CacheFileValidation, DuplicateKeys) {
   expectRejected([](auto& e) { e.push_back(e[0]); }, "(level 0, depth 1, order 3) twice");
 }
 
+// Finding 6: the scene hash keys images (and meshes) by their contents, not their paths.
+TEST(CacheSceneHash, EnvmapByPixelsNotPath) {
+  Scene scene;
+  Emitter env;
+  env.type = EmitterType::Envmap;
+  env.filename = "/one/dir/sky.exr";
+  env.envWidth = 2;
+  env.envHeight = 1;
+  env.envPixels = {Color(1.0f), Color(0.5f)};
+  scene.emitters.push_back(env);
+  const uint64_t h0 = cacheSceneHash(scene, 4, false);
+  scene.emitters[0].filename = "../elsewhere/sky.exr";
+  EXPECT_EQ(cacheSceneHash(scene, 4, false), h0) << "the path must not matter";
+  scene.emitters[0].envPixels[1] = Color(0.5f, 0.5f, 0.6f);
+  EXPECT_NE(cacheSceneHash(scene, 4, false), h0) << "the pixels must";
+}
+
 }  // namespace
 }  // namespace rc

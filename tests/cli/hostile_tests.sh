@@ -153,5 +153,18 @@ add_shape huge_triangle.xml '<shape type="obj"><string name="filename" value="hu
 expect_renders huge_triangle 20 -- huge_triangle.xml --integrator path --quiet -t 2 -o huge_triangle.exr
 finite_image huge_triangle.exr && pass huge_triangle_finite || fail huge_triangle_finite "non-finite pixels"
 
+# --- 6. The cache's scene hash follows the envmap's pixels, not its path.
+mkdir -p envA envB
+"$RC" "$DATA/tiny.xml" --integrator path -D res=8 --spp 1 -o envA/sky.exr --quiet --seed 1
+sed 's|</scene>|<emitter type="envmap"><string name="filename" value="sky.exr"/></emitter></scene>|' "$DATA/tiny.xml" > envA/scene.xml
+cp envA/scene.xml envA/sky.exr envB/
+if "$RC" envA/scene.xml "${RCACHE[@]}" -D res=8 -o envA/a.exr --cache-save envA/c.rcc \
+   && "$RC" envB/scene.xml "${RCACHE[@]}" -D res=8 -o envB/b.exr --cache-load envA/c.rcc 2> envB/err; then
+  pass cache_from_another_directory
+else fail cache_from_another_directory "$(cat envB/err)"; fi
+# The same path with other pixels: the cache is stale.
+"$RC" "$DATA/tiny.xml" --integrator path -D res=8 --spp 1 -o envA/sky.exr --quiet --seed 2
+expect_refusal cache_after_envmap_changed "made for another scene" 20 -- envA/scene.xml "${RCACHE[@]}" -D res=8 -o envA/c.exr --cache-load envA/c.rcc
+
 echo "$fails failure(s)"
 [ $fails -eq 0 ]
