@@ -9,6 +9,7 @@
 #include "cache/cache_engine.h"
 #include "cache/cache_file.h"
 #include "cache/cache_params.h"
+#include "cache/final_pass_memory.h"
 #include "cl/sh_backend.h"
 #include "core/error.h"
 #include "core/parallel.h"
@@ -84,6 +85,8 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
 
   Film film(scene.film);
   const int W = film.width(), H = film.height();
+  // Before the fill, not after it: the final pass's smallest batch is one film row of spp samples.
+  checkFinalPassMemory(static_cast<size_t>(W) * static_cast<size_t>(spp), W, spp);
   CameraModel camera(scene.camera, W, H);
   Vec3 lo, hi;
   finiteSceneBounds(scene, lo, hi);

@@ -166,5 +166,16 @@ else fail cache_from_another_directory "$(cat envB/err)"; fi
 "$RC" "$DATA/tiny.xml" --integrator path -D res=8 --spp 1 -o envA/sky.exr --quiet --seed 2
 expect_refusal cache_after_envmap_changed "made for another scene" 20 -- envA/scene.xml "${RCACHE[@]}" -D res=8 -o envA/c.exr --cache-load envA/c.rcc
 
+# --- 7. A <default> chain that doubles its value is refused where it outgrows any real value.
+python3 - <<'PY'
+lines = ['<scene version="3.0.0">', '<default name="p0" value="xxxxxxxx"/>']
+lines += ['<default name="p%d" value="$p%d$p%d"/>' % (i, i - 1, i - 1) for i in range(1, 41)]
+open("doubling.xml", "w").write("\n".join(lines + ["</scene>"]))
+PY
+expect_refusal default_doubling_chain "doubling.xml:20:" 20 -- doubling.xml -o d.exr
+# A valid --spp whose final-pass batch (one film row × spp samples) cannot fit is refused up front.
+expect_refusal spp_beyond_memory "--spp 1048576: the rcache final pass shades a film row of 32 pixels" 20 -- \
+  "$DATA/tiny.xml" "${RCACHE[@]}" -D res=32 --spp 1048576 -o huge_spp.exr
+
 echo "$fails failure(s)"
 [ $fails -eq 0 ]
