@@ -30,6 +30,19 @@ void applyIntegratorOptions(const RenderArgs& args, const std::string& integrato
       throw Error(flag + ": '" + name + "' is an rcache parameter, but this render uses the path integrator");
     }
     s.params[name] = value;
+    s.paramWhere.erase(name);  // now from the command line, named by the message above
+  }
+  // The rcache integrator checks its parameters when it starts, by name only: check each one
+  // written in the file here, so a bad value is reported at its file:line.
+  if (integrator != "rcache") return;
+  for (const auto& [name, value] : s.params) {
+    const auto where = s.paramWhere.find(name);
+    const std::string prefix = where != s.paramWhere.end() ? where->second + ": " : "-D " + name + "=" + value + ": ";
+    try {
+      parseRcacheParams({{name, value}});
+    } catch (const Error& e) {
+      throw Error(prefix + e.what());
+    }
   }
 }
 

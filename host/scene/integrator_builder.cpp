@@ -21,6 +21,7 @@ void Loader::buildIntegrator(const std::shared_ptr<XmlFile>& file, const pugi::x
   if (s.maxDepth < -1) e.failParam("max_depth", "'max_depth' must be -1 (unbounded) or >= 0");
   if (s.rrDepth <= 0) e.failParam("rr_depth", "'rr_depth' must be positive");
   s.params = e.raw;
+  for (const auto& kv : e.raw) s.paramWhere[kv.first] = e.whereParam(kv.first);
   if (e.type == "path") {
     checkUnused(e);
   } else {

@@ -73,6 +73,7 @@ struct IntegratorSettings {
   int rrDepth = 5;
   bool hideEmitters = false;
   std::map<std::string, std::string> params;  // raw values of all parameters, by name
+  std::map<std::string, std::string> paramWhere;  // "file:line" of each parameter written in the file
 };
 
 struct Scene {

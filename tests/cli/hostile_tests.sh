@@ -176,6 +176,10 @@ expect_refusal default_doubling_chain "doubling.xml:20:" 20 -- doubling.xml -o d
 # A valid --spp whose final-pass batch (one film row × spp samples) cannot fit is refused up front.
 expect_refusal spp_beyond_memory "--spp 1048576: the rcache final pass shades a film row of 32 pixels" 20 -- \
   "$DATA/tiny.xml" "${RCACHE[@]}" -D res=32 --spp 1048576 -o huge_spp.exr
+# A bad rcache parameter in the file is reported at its line.
+sed 's|<integrator type="path"><integer name="max_depth" value="4"/></integrator>|<integrator type="rcache">\n<integer name="max_depth" value="4"/>\n<float name="a" value="-2"/></integrator>|' \
+  "$DATA/tiny.xml" > bad_param.xml
+expect_refusal rcache_param_file_line "bad_param.xml:7: <integrator type=\"rcache\">: rcache parameter 'a'" 20 -- bad_param.xml --device cpu -o bp.exr
 
 echo "$fails failure(s)"
 [ $fails -eq 0 ]
