@@ -82,7 +82,10 @@ RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const Rende
     std::vector<Vec2> pos;
     std::vector<Ray> rays;
     std::vector<Hit> hits;
-    for (int py = tile.y0(); py < tile.y1(); ++py) {
+    // Cancellation is checked per pixel, not only per tile: at high spp one tile is minutes of
+    // work, and SIGINT/SIGTERM must stop the render promptly (the partial tile is kept).
+    auto cancelled = [&] { return ctx.cancel && ctx.cancel->load(std::memory_order_relaxed); };
+    for (int py = tile.y0(); py < tile.y1() && !cancelled(); ++py) {
       const size_t row = static_cast<size_t>(py) * width;
       // The row's samples: their RNG streams and film positions, then (batch) the camera rays.
       rngs.clear();
@@ -100,7 +103,7 @@ RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const Rende
         ctx.accel.intersect(rays.data(), hits.data(), rays.size(), true);
       }
       size_t k = 0;
-      for (int px = tile.x0(); px < tile.x1(); ++px)
+      for (int px = tile.x0(); px < tile.x1() && !cancelled(); ++px)
         for (int s = ranges[row + px].first; s < ranges[row + px].end; ++s, ++k) {
           Rng& rng = rngs[k];
           SampleInput in;
