@@ -4,6 +4,8 @@
 // or throws rc::Error; anything else (other exceptions, sanitizer reports, huge allocations under
 // -rss_limit_mb, timeouts) is a finding. Built with -DRC_FUZZ=ON (see fuzz/fuzz_scene.cpp), run by
 // scripts/run_fuzz.sh from tests/fuzz/corpus_cache (files without their trailing checksum).
+// Whatever the loader accepts is inserted into radiance caches and looked up at every record,
+// so crafted values that pass validation but would hang or poison the octree are findings too.
 #include <unistd.h>
 
 #include <cstddef>
@@ -15,6 +17,7 @@
 
 #include "brdf/table_cache.h"
 #include "cache/cache_file.h"
+#include "cache/radiance_cache.h"
 #include "core/error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -27,7 +30,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size >= 20) std::memcpy(&sceneHash, data + 12, sizeof sceneHash);  // magic (8) + version (4)
   std::ofstream(path, std::ios::binary | std::ios::trunc).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   try {
-    rc::loadCacheFile(path.string(), sceneHash);
+    // What passes the loader's range checks must also be safe to use: insert it into caches
+    // (neighbour clamping, octree) and look up at every record, as --cache-load then the fill do.
+    for (const rc::CacheFileEntry& e : rc::loadCacheFile(path.string(), sceneHash)) {
+      rc::RadianceCache cache(e.key.order, rc::Vec3(-1.0f), rc::Vec3(1.0f));
+      cache.insert(e.infos, e.lambda, e.gradT, e.gradB, {}, {}, {}, true);
+      rc::Lookup lookup;
+      for (const rc::RecordInfo& r : e.infos) {
+        cache.lookup(r.p, r.frame.n, lookup);
+        cache.lookup(r.p, r.frame.n, lookup, 2.0f);
+      }
+    }
   } catch (const rc::Error&) {
     // Rejecting a bad file with a message is the correct outcome.
   }

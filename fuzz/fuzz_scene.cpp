@@ -6,8 +6,8 @@
 //   cmake --build build-fuzz -j2 --target fuzz_scene
 //   mkdir -p fuzz-corpus && build-fuzz/fuzz_scene -max_len=8192 -timeout=5 fuzz-corpus scenes scenes/stress tests/cli/data
 //
-// The first byte picks the reader (0: scene XML, 1: OBJ, 2: PLY, by value mod 3); the rest is the
-// file. Shipped .xml files work as seeds as they are ('<' mod 3 = 0). Contract: the reader returns
+// The first byte picks the reader (0: scene XML, 1: OBJ, 2: PLY, by value mod 3; 0xFF: a deeply
+// nested scene built from the rest, see deeplyNested); the rest is the file. Shipped .xml files work as seeds as they are ('<' mod 3 = 0). Contract: the reader returns
 // or throws rc::Error; any other exception escapes and libFuzzer reports it as a crash, as it
 // does ASan/UBSan findings and inputs that run past -timeout.
 #include <unistd.h>
@@ -37,10 +37,35 @@ const std::filesystem::path& workDir() {
   return dir;
 }
 
+// Deep nesting (first byte 0xFF): bytes 1–3 give a depth up to 2^18, byte 4 the element that
+// nests, the rest goes inside the innermost one. The loader must refuse what is too deep with a
+// message, not overflow its stack in a recursive pass.
+std::string deeplyNested(const uint8_t* data, size_t size) {
+  static const char* const kOpen[] = {"<bsdf type=\"twosided\">", "<bsdf type=\"blendbsdf\">", "<shape type=\"sphere\">",
+                                      "<texture type=\"checkerboard\">", "<transform name=\"to_world\">", "<group>"};
+  static const char* const kClose[] = {"</bsdf>", "</bsdf>", "</shape>", "</texture>", "</transform>", "</group>"};
+  const size_t depth = size > 3 ? ((size_t(data[1]) << 10) | (size_t(data[2]) << 2) | (data[3] & 3)) : 0;
+  const size_t kind = size > 4 ? data[4] % 6 : 0;
+  std::string xml = "<scene version=\"3.0.0\">";
+  for (size_t i = 0; i < depth; ++i) xml += kOpen[kind];
+  if (size > 5) xml.append(reinterpret_cast<const char*>(data) + 5, size - 5);
+  for (size_t i = 0; i < depth; ++i) xml += kClose[kind];
+  return xml + "</scene>";
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
+  if (data[0] == 0xFF) {
+    const std::filesystem::path path = workDir() / "deep.xml";
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << deeplyNested(data, size);
+    try {
+      rc::loadScene(path.string());
+    } catch (const rc::Error&) {
+    }
+    return 0;
+  }
   const int kind = data[0] % 3;
   static const char* const kNames[] = {"case.xml", "case.obj", "case.ply"};
   const std::filesystem::path path = workDir() / kNames[kind];

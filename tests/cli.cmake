@@ -7,3 +7,6 @@ set_tests_properties(cli_merl PROPERTIES LABELS cli TIMEOUT 120)
 # Integrator selection end to end: --integrator, auto, Mitsuba aliases, nested wrappers, -D routing.
 add_test(NAME cli_integrators COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/integrator_tests.sh $<TARGET_FILE:rcache>)
 set_tests_properties(cli_integrators PROPERTIES LABELS cli TIMEOUT 120)
+# Hostile inputs (issue 19): crashes, hangs, unbounded memory and lost output, each under limits.
+add_test(NAME cli_hostile COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/hostile_tests.sh $<TARGET_FILE:rcache>)
+set_tests_properties(cli_hostile PROPERTIES LABELS cli TIMEOUT 600)

@@ -1,6 +1,6 @@
 #include "app/cli.h"
 
-#include <unistd.h>
+#include <signal.h>
 
 #include <algorithm>
 #include <atomic>
@@ -12,6 +12,7 @@
 #include "app/cli_args.h"
 #include "app/diff_command.h"
 #include "app/integrator_registry.h"
+#include "app/output_checks.h"
 #include "app/progress_bar.h"
 #include "app/stats_report.h"
 #include "cl/sh_backend.h"
@@ -21,8 +22,6 @@
 #include "core/parallel.h"
 #include "core/timing.h"
 #include "geometry/accel.h"
-#include "image/image_file.h"
-#include "image/oiio_module.h"
 #include "render/image_io.h"
 #include "render/light_sampler.h"
 #include "scene/param_reader.h"
@@ -33,10 +32,28 @@ namespace rc {
 namespace {
 
 std::atomic<bool> gCancel{false};
+std::atomic<int> gSignal{0};
 
-extern "C" void onInterrupt(int) {
-  // Second Ctrl-C: the user insists, leave immediately.
-  if (gCancel.exchange(true)) std::_Exit(130);
+// SIGINT and SIGTERM alike: the first stops the render early (the partial image is still written,
+// and a write in progress finishes); a second one means leave now, removing any temporary file.
+extern "C" void onStopSignal(int sig) {
+  int none = 0;
+  gSignal.compare_exchange_strong(none, sig);
+  if (gCancel.exchange(true)) {
+    removeRegisteredTemporaries();
+    std::_Exit(128 + gSignal.load());
+  }
+}
+
+void installSignalHandlers() {
+  struct sigaction sa {};
+  sa.sa_handler = onStopSignal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+  // A file-size limit (ulimit -f) is a full disk by another name: let write(2) fail with EFBIG
+  // and report it, rather than die of SIGXFSZ with a temporary left behind.
+  std::signal(SIGXFSZ, SIG_IGN);
 }
 
 std::string defaultOutputPath(const std::string& scenePath) {
@@ -44,19 +61,6 @@ std::string defaultOutputPath(const std::string& scenePath) {
   const size_t dot = scenePath.find_last_of('.');
   if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) return scenePath.substr(0, dot) + ".exr";
   return scenePath + ".exr";
-}
-
-// Fails before a long render rather than after it: the format must be known and the directory writable.
-void checkOutputWritable(const std::string& path) {
-  const std::string ext = lowerExtension(path);
-  if (ext != ".exr" && ext != ".png" && ext != ".hdr")
-    throw Error(path + ": unsupported output format (use .exr, .png or .hdr)");
-  // PNG and HDR are written through the OpenImageIO module: load it now, so that a missing module
-  // is an error before the render instead of after it.
-  if (ext != ".exr") oiioModule();
-  const size_t slash = path.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
-  if (access(dir.c_str(), W_OK) != 0) throw Error(path + ": directory '" + dir + "' is not writable");
 }
 
 bool sceneHasCachedMaterial(const Scene& scene) {
@@ -77,13 +81,33 @@ std::string chooseIntegrator(const std::string& requested, const Scene& scene) {
 
 // The integrator to render with (--integrator, else the file's), with the -D names that are its
 // parameters applied: they override the file; other names are scene parameters only, as in Mitsuba.
+// Nothing given on the command line is silently dropped: the options only rcache reads, and a -D
+// naming a parameter of another integrator than the one rendering, are refused.
 std::unique_ptr<Integrator> integratorFor(const RenderArgs& ra, const Scene& scene, const IntegratorEntry*& entry) {
   IntegratorSettings settings = scene.integrator;
   settings.type = chooseIntegrator(ra.integrator, scene);
+  if (settings.type != "rcache") {
+    const std::string uses = ": only with the rcache integrator (this render uses " + settings.type + ")";
+    if (!ra.cacheSave.empty()) throw Error("--cache-save" + uses);
+    if (!ra.cacheLoad.empty()) throw Error("--cache-load" + uses);
+    if (!ra.aovs.empty()) throw Error("--aov " + ra.aovs.front() + uses);
+  }
   const std::vector<std::string> paramNames = integratorParameterNames(settings.type);
-  for (const auto& kv : ra.defines)
-    if (std::find(paramNames.begin(), paramNames.end(), kv.first) != paramNames.end())
-      settings.props.set(kv.first, textProperty(kv.second));
+  for (const auto& [name, value] : ra.defines) {
+    const std::string flag = "-D " + name + "=" + value;
+    if (std::find(paramNames.begin(), paramNames.end(), name) != paramNames.end()) {
+      settings.props.set(name, textProperty(value));
+      settings.paramWhere[name] = flag;  // a bad value is reported as the option, not the file's line
+      continue;
+    }
+    for (const IntegratorEntry& other : integratorEntries()) {
+      const std::vector<std::string> otherNames = integratorParameterNames(other.name);
+      if (std::find(otherNames.begin(), otherNames.end(), name) != otherNames.end())
+        throw Error(flag + ": '" + name + "' is " + (other.name == "rcache" ? "an " : "a ") + other.name +
+                    " parameter, but this render uses the " + settings.type + " integrator");
+    }
+    // Otherwise a scene parameter ($name) only, as in Mitsuba.
+  }
   std::vector<std::string> warnings;
   auto integrator = makeIntegrator(settings, ra.lenient, settings.type == scene.integrator.type, &warnings, &entry);
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
@@ -94,13 +118,8 @@ int runRender(const std::vector<std::string>& args) {
   RenderArgs ra = parseRenderArgs(args);
   if (ra.threads > 0) setThreadCount(ra.threads);
   const std::string output = ra.outputPath.empty() ? defaultOutputPath(ra.scenePath) : ra.outputPath;
-  checkOutputWritable(output);
-  for (const std::string* p : {&ra.statsPath, &ra.cacheSave})
-    if (!p->empty()) {
-      const size_t slash = p->find_last_of('/');
-      const std::string dir = slash == std::string::npos ? "." : p->substr(0, slash);
-      if (access(dir.c_str(), W_OK) != 0) throw Error(*p + ": directory '" + dir + "' is not writable");
-    }
+  checkOutputs(ra, output);
+  installSignalHandlers();
 
   RenderStats stats;
   const auto tStart = SteadyClock::now();
@@ -110,9 +129,10 @@ int runRender(const std::vector<std::string>& args) {
   std::vector<std::string> warnings;
   Scene scene = loadScene(ra.scenePath, lo, &warnings);
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+  const double loadS = secondsSince(tStart);
+  if (gCancel) return 128 + gSignal.load();  // stopped while loading: nothing rendered to keep
   const IntegratorEntry* entry = nullptr;
   std::unique_ptr<Integrator> integrator = integratorFor(ra, scene, entry);
-  const double loadS = secondsSince(tStart);
 
   const auto tBvh = SteadyClock::now();
   Accel accel(scene);
@@ -139,11 +159,9 @@ int runRender(const std::vector<std::string>& args) {
   RenderContext ctx{scene, accel, lights, opts, backend.get(), &gCancel,
                     [&bar](const std::string& phase, double done, double total) { bar.update(phase, done, total); }};
 
-  std::signal(SIGINT, onInterrupt);
   const auto tRender = SteadyClock::now();
   Image image = integrator->render(ctx, stats);
   const double renderS = secondsSince(tRender);
-  std::signal(SIGINT, SIG_DFL);
   bar.finish();
 
   const auto tWrite = SteadyClock::now();
@@ -165,9 +183,12 @@ int runRender(const std::vector<std::string>& args) {
   if (gCancel) stats.set("interrupted", 1);
   if (!ra.quiet) printStats(stats, std::cout);
   if (!ra.statsPath.empty()) writeFileAtomically(ra.statsPath, statsToJson(stats));
+  // A failed cache save does not cost the image: it was written above, the failure is reported now.
+  const std::string cacheError = stats.text("cache_save_error");
+  if (!cacheError.empty()) throw Error(cacheError);
   if (gCancel) {
     std::cerr << "interrupted: wrote the partial image to " << output << "\n";
-    return 130;
+    return 128 + gSignal.load();
   }
   return 0;
 }

@@ -52,6 +52,10 @@ int runDiff(const DiffArgs& args, std::ostream& out) {
     for (size_t i = 0; i < err.size(); ++i) heat.pixels[i] = heatColor(err[i]);
     writeImage(heat, args.heatmap);
   }
+  // The metrics cover finite pixels only; an image of NaNs must not pass as identical.
+  if (e.nonFinite > 0)
+    throw Error("diff: " + std::to_string(e.nonFinite) + " pixel(s) are NaN or infinite in " + args.a + " or " + args.b +
+                " (the metrics above cover the finite ones)");
   return 0;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cache/radius_floor.h"
 #include "cache/record_octree.h"
 #include "cache/rng_salts.h"
 #include "cache/world_frame.h"
@@ -299,10 +300,16 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
   int adaptiveRounds = 0;
   bool created = false;
   std::vector<uint32_t> shrunk;  // records whose radius clamping lowered since the last check
-  std::vector<size_t> all(n);
-  for (size_t i = 0; i < n; ++i) all[i] = i;
+  std::vector<size_t> all;
+  // Points off the float range (a hit on an overflowing sphere) cannot hold a record.
+  for (size_t i = 0; i < n; ++i)
+    if (isFinite(pts[i].hit.p)) all.push_back(i);
   std::vector<size_t> todo = all;
-  for (;;) {
+  // Each creation round covers at least the points its records were made at (radius_floor.h), so
+  // the loop ends within about 2n rounds; the bound and the cancel check are the last resort.
+  const size_t maxRounds = 2 * n + 64;
+  for (size_t round = 0; round < maxRounds && !(ctx_.cancel && ctx_.cancel->load(std::memory_order_relaxed));
+       ++round) {
     lookUp(cache, pts, todo, lookups, relaxedScale);
     std::vector<size_t> uncovered;
     for (size_t i : todo)
@@ -437,6 +444,7 @@ RecordInfo CacheEngine::clampRecord(const CacheKey& key, const ShadePoint& cand,
   // cache only re-samples what a path tracer would, at 1000 rays a pixel) nor more than r_max.
   const float aL = aForLevel(key.level), levelScale = aL / params_.a;
   info.R = std::min(std::max(std::min(R, Rg), params_.rMinPx * levelScale * fp / aL), params_.rMaxPx * levelScale * fp / aL);
+  info.R = std::max(info.R, minimumReach(cand.hit.p, maxComponent(hi_ - lo_)) / aL);
   // The pixel-footprint floor r_min can push R past the gradient limit (records in corners,
   // where R is tiny and the gradient ~Λ/R): scale the gradient down so the bound holds at the
   // radius actually used. Without this, a record 3 px wide extrapolates a gradient meant for a

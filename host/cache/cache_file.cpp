@@ -6,10 +6,12 @@
 #include <sstream>
 
 #include "brdf/table_cache.h"
+#include "cache/cache_file_validation.h"
 #include "cache/world_frame.h"
 #include "core/atomic_file.h"
 #include "core/binary_writer.h"
 #include "core/error.h"
+#include "core/regular_file.h"
 
 namespace rc {
 
@@ -74,7 +76,11 @@ uint64_t cacheSceneHash(const Scene& scene, int maxDepth, bool tlMode) {
     hashFloats(h, v, 13);
     hashFloats(h, &e.direction.x, 3);
     hashFloats(h, &e.toWorld[0][0], 16);
-    h = fnv1a64(e.filename.data(), e.filename.size(), h);
+    // The envmap by its pixels, not its path: an edited image must not reuse a stale cache, and
+    // the same scene run from another directory must still find its cache.
+    const int size[2] = {e.envWidth, e.envHeight};
+    h = fnv1a64(size, sizeof(size), h);
+    if (!e.envPixels.empty()) hashFloats(h, &e.envPixels[0].x, 3 * e.envPixels.size());
   }
   const int extra[2] = {maxDepth, tlMode ? 1 : 0};
   return fnv1a64(extra, sizeof(extra), h);
@@ -105,6 +111,7 @@ void saveCacheFile(const std::string& path, uint64_t sceneHash, const std::vecto
 }
 
 std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expectedSceneHash) {
+  requireRegularFile(path, "cache file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot open cache file");
   std::stringstream ss;
@@ -139,11 +146,7 @@ std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expe
     e.infos.resize(n);
     for (RecordInfo& info : e.infos) {
       float v[14];
-      for (float& x : v) {
-        x = r.get<float>();
-        if (!std::isfinite(x)) throw Error(path + ": cache file has a non-finite record position, frame or radius");
-      }
-      if (!(v[12] > 0.0f) || !(v[13] > 0.0f)) throw Error(path + ": cache file has a record with radius or a ≤ 0");
+      for (float& x : v) x = r.get<float>();
       info.p = Vec3(v[0], v[1], v[2]);
       info.frame = Frame(Vec3(v[3], v[4], v[5]), Vec3(v[6], v[7], v[8]), Vec3(v[9], v[10], v[11]));
       info.R = v[12];
@@ -155,6 +158,7 @@ std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expe
     r.floats(e.gradB, k);
   }
   if (r.pos + 8 != data.size()) throw Error(path + ": cache file has trailing bytes");
+  validateCacheEntries(entries, path);
   return entries;
 }
 

@@ -7,7 +7,8 @@
 //   u64 FNV-1a of every preceding byte.
 // Written to a temporary sibling and renamed (a reader sees a whole file or none). Loading checks
 // magic, version, scene hash (geometry, materials, emitters, max_depth, record mode: whatever
-// changes what a record holds — not the camera) and the checksum, and names what is wrong.
+// changes what a record holds — not the camera; meshes and images by their contents, never by
+// their paths) and the checksum, and names what is wrong.
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -18,6 +18,8 @@ RcacheParams readRcacheParams(ParamReader& in) {
   p.gradients = in.flag("gradients", p.gradients);
   p.rMinPx = in.real("rmin", p.rMinPx, 0.01f, 1e6f);
   p.rMaxPx = in.real("rmax", p.rMaxPx, 0.01f, 1e9f);
+  // Checked right after rmax is read, so a file's error names rmax's line.
+  if (p.rMinPx > p.rMaxPx) throw Error("rcache parameters: rmin must not exceed rmax");
   p.secondaryAScale = in.real("secondary_a_scale", p.secondaryAScale, 1.0f, 100.0f);
   p.secondaryRays = in.integer("secondary_rays", p.secondaryRays, 8, 65536);
   p.secondaryOrder = in.integer("secondary_order", p.secondaryOrder, 0, 16);
@@ -29,7 +31,6 @@ RcacheParams readRcacheParams(ParamReader& in) {
   p.worldFrame = frame != "record";
   p.autoFrame = frame == "auto";
   p.tlMode = in.choice("mode", "radiance", {"radiance", "tl"}) == "tl";
-  if (p.rMinPx > p.rMaxPx) throw Error("rcache parameters: rmin must not exceed rmax");
   return p;
 }
 

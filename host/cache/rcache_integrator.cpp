@@ -9,11 +9,14 @@
 #include "cache/cache_fill.h"
 #include "cache/cache_params.h"
 #include "cache/final_pass.h"
+#include "cache/final_pass_memory.h"
 #include "cache/primary_hits.h"
 #include "cache/rcache_run.h"
 #include "cache/rcache_stats.h"
 #include "cl/sh_backend.h"
+#include "core/error.h"
 #include "core/timing.h"
+#include "geometry/scene_bounds.h"
 #include "render/camera.h"
 #include "render/film.h"
 #include "render/render_loop.h"
@@ -21,25 +24,6 @@
 namespace rc {
 
 namespace {
-
-// The box the caches' octrees span (a unit box for an empty scene).
-void sceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
-  lo = Vec3(INFINITY);
-  hi = Vec3(-INFINITY);
-  for (const Mesh& m : scene.meshes)
-    for (const Vec3& p : m.positions) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-  for (const Sphere& s : scene.spheres) {
-    lo = glm::min(lo, s.center - Vec3(s.radius));
-    hi = glm::max(hi, s.center + Vec3(s.radius));
-  }
-  if (!(lo.x <= hi.x)) {
-    lo = Vec3(-1.0f);
-    hi = Vec3(1.0f);
-  }
-}
 
 // Phase 1 of a render: every material's technique, SH order and BRDF×cos table (nothing is built
 // without cached materials).
@@ -88,12 +72,14 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   const double tablesS = secondsSince(start);
 
   Film film(scene.film);
+  const int spp = ctx.options.spp > 0 ? ctx.options.spp : scene.sampleCount;
+  // Before the fill, not after it: the final pass's smallest batch is one film row of spp samples.
+  checkFinalPassMemory(static_cast<size_t>(film.width()) * static_cast<size_t>(spp), film.width(), spp);
   const CameraModel camera(scene.camera, film.width(), film.height());
   Vec3 lo, hi;
-  sceneBounds(scene, lo, hi);
+  finiteSceneBounds(scene, lo, hi);
   CacheEngine engine(ctx, params_, tables, camera, settings_.maxDepth, settings_.rrDepth, lo, hi);
   const PrimaryHits primaries(ctx, engine, camera, settings_.maxDepth, settings_.hideEmitters);
-  const int spp = ctx.options.spp > 0 ? ctx.options.spp : scene.sampleCount;
   const RcacheRun run{ctx, params_, tables, camera, engine, primaries, film.width(), film.height(),
                       spp, scene.samplerSeed + ctx.options.seed, usesLowDiscrepancy(ctx)};
   const uint64_t sceneHash = cacheSceneHash(scene, settings_.maxDepth, params_.tlMode);
@@ -114,7 +100,14 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
 
   Image img = film.develop();
   if (aovs.records) addRecordsAov(engine, img);
-  if (!ctx.options.cacheSave.empty() && !interrupted) saveCaches(engine, ctx.options.cacheSave, sceneHash);
+  if (!ctx.options.cacheSave.empty() && !interrupted) {
+    // A failed save (full disk) must not lose the image: the CLI writes it, then reports this.
+    try {
+      saveCaches(engine, ctx.options.cacheSave, sceneHash);
+    } catch (const Error& e) {
+      stats.setText("cache_save_error", e.what());
+    }
+  }
 
   reportRcacheStats(run, {secondsSince(start), tablesS, finalS, fill, pass, adaptive, recordsLoaded, interrupted},
                     stats);

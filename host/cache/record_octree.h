@@ -35,6 +35,8 @@ class RecordOctree {
   template <class Visit>
   void querySphere(const Vec3& p, float r, Visit&& visit) const;
   size_t size() const { return count_; }
+  // Nodes allocated (tests: hostile positions and radii must not multiply them).
+  size_t nodeCount() const;
 
  private:
   struct Node {
@@ -46,7 +48,9 @@ class RecordOctree {
   Vec3 center_;
   float half_;
   size_t count_ = 0;
-  void grow(const Vec3& p);
+  // false when containing p would overflow float (the root is left as it was).
+  bool grow(const Vec3& p);
+  static bool finiteVec(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
   void insertBox(Node* node, const Vec3& c, float h, int depthLeft, const Vec3& lo, const Vec3& hi, uint32_t id);
   static int childIndex(const Vec3& p, const Vec3& c) { return (p.x < c.x ? 0 : 1) | (p.y < c.y ? 0 : 2) | (p.z < c.z ? 0 : 4); }
   static Vec3 childCenter(const Vec3& c, float h, int k) {

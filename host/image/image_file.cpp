@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "core/error.h"
+#include "core/regular_file.h"
 #include "image/exr_file.h"
 #include "image/oiio_module.h"
 
@@ -44,6 +45,7 @@ void writeImageFile(const std::string& path, const std::string& formatPath, cons
 }
 
 ImageChannels readImageFile(const std::string& path) {
+  requireRegularFile(path, "image");
   if (lowerExtension(path) == ".exr") return readExr(path);
   ImageChannels image;
   const std::string why = oiioModule().read(path, image);

@@ -22,6 +22,24 @@ float srgbToLinear(float v) {
   return std::pow((v + 0.055f) / 1.055f, 2.4f);
 }
 
+namespace {
+
+// A codec's success is not proof of a whole file: OpenImageIO's PNG writer reports no error when
+// the disk fills (a truncated, unreadable PNG). Decode the temporary completely before it may
+// replace anything; the cost is one read of a file just written, small beside any render.
+void verifyWrittenImage(const std::string& tmp, const std::string& path, const ImageChannels& written) {
+  ImageChannels back;
+  try {
+    back = readImageFile(tmp);
+  } catch (const Error& e) {
+    throw Error(path + ": the written image does not read back (disk full?): " + e.what());
+  }
+  if (back.width != written.width || back.height != written.height || back.channels() != written.channels())
+    throw Error(path + ": the written image does not read back whole (disk full?)");
+}
+
+}  // namespace
+
 void writeImage(const Image& image, const std::string& path) {
   const std::string ext = lowerExtension(path);
   if (ext != ".exr" && ext != ".png" && ext != ".hdr")
@@ -51,11 +69,13 @@ void writeImage(const Image& image, const std::string& path) {
       for (const auto& [name, layer] : image.aovs)
         for (int c = 0; c < 3; ++c) px[k++] = layer[i][c];
   }
-  const std::string tmp = temporarySibling(path);
+  const std::string tmp = beginTemporary(path);
   try {
     writeImageFile(tmp, path, out);
+    syncTemporary(tmp, path);
+    verifyWrittenImage(tmp, path, out);
   } catch (...) {
-    std::remove(tmp.c_str());
+    abandonTemporary(tmp);
     throw;
   }
   commitTemporary(tmp, path);

@@ -37,6 +37,7 @@ struct RenderStats {
   void setText(const std::string& key, const std::string& value);
   void setJson(const std::string& key, const std::string& rawJson);
   double get(const std::string& key, double fallback = 0.0) const;
+  std::string text(const std::string& key) const;  // "" when not set
 };
 
 // Linear RGB image plus optional named AOV layers, all width×height, row-major, top row first.

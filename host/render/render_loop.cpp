@@ -71,9 +71,10 @@ bool usesLowDiscrepancy(const RenderContext& ctx) {
 
 namespace {
 
-// The sample loop shared by renderSamples and renderSampleBatches: per tile row, the row's samples
-// (RNG streams, film positions, camera rays and their hits traced as one coherent stream), then
-// `shadeRow(inputs, rngs, n, radiance)`, then the splats in sample order.
+// The sample loop shared by renderSamples and renderSampleBatches: per tile row (in chunks of whole
+// pixels when the row holds many samples), the samples' RNG streams, film positions, camera rays
+// and their hits traced as one coherent stream, then `shadeRow(inputs, rngs, n, radiance)`, then
+// the splats in sample order.
 template <class ShadeRow>
 RenderLoopResult sampleLoop(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
                             const ShadeRow& shadeRow) {
@@ -92,43 +93,50 @@ RenderLoopResult sampleLoop(const RenderContext& ctx, Film& film, const RenderLo
     std::vector<Ray> rays;
     std::vector<Hit> hits;
     std::vector<Color> radiance;
-    for (int py = tile.y0(); py < tile.y1(); ++py) {
+    // Cancellation is checked per pixel, not only per tile: at high spp one tile is minutes of
+    // work, and SIGINT/SIGTERM must stop the render promptly (the partial tile is kept). A row is
+    // therefore shaded in chunks of whole pixels, each large enough for a coherent ray stream.
+    constexpr size_t kChunkSamples = 4096;
+    auto cancelled = [&] { return ctx.cancel && ctx.cancel->load(std::memory_order_relaxed); };
+    for (int py = tile.y0(); py < tile.y1() && !cancelled(); ++py) {
       const size_t row = static_cast<size_t>(py) * width;
-      rngs.clear();
-      inputs.clear();
-      for (int px = tile.x0(); px < tile.x1(); ++px)
-        for (int s = ranges[row + px].first; s < ranges[row + px].end; ++s) {
-          rngs.push_back(pixelRng(settings.seed, width, px, py, s, settings.lowDiscrepancy));
-          SampleInput in;
-          in.px = px;
-          in.py = py;
-          in.sampleIndex = s;
-          in.filmPos = Vec2(static_cast<float>(px), static_cast<float>(py)) + rngs.back().next2D();
-          inputs.push_back(in);
+      for (int px = tile.x0(); px < tile.x1() && !cancelled();) {
+        rngs.clear();
+        inputs.clear();
+        for (; px < tile.x1() && inputs.size() < kChunkSamples; ++px)
+          for (int s = ranges[row + px].first; s < ranges[row + px].end; ++s) {
+            rngs.push_back(pixelRng(settings.seed, width, px, py, s, settings.lowDiscrepancy));
+            SampleInput in;
+            in.px = px;
+            in.py = py;
+            in.sampleIndex = s;
+            in.filmPos = Vec2(static_cast<float>(px), static_cast<float>(py)) + rngs.back().next2D();
+            inputs.push_back(in);
+          }
+        const size_t n = inputs.size();
+        if (n == 0) continue;
+        if (batch) {
+          rays.resize(n);
+          hits.resize(n);
+          for (size_t k = 0; k < n; ++k) rays[k] = settings.cameraRay(inputs[k].filmPos);
+          ctx.accel.intersect(rays.data(), hits.data(), n, true);
+          for (size_t k = 0; k < n; ++k) {
+            inputs[k].cameraRay = &rays[k];
+            inputs[k].cameraHit = &hits[k];
+          }
         }
-      const size_t n = inputs.size();
-      if (n == 0) continue;
-      if (batch) {
-        rays.resize(n);
-        hits.resize(n);
-        for (size_t k = 0; k < n; ++k) rays[k] = settings.cameraRay(inputs[k].filmPos);
-        ctx.accel.intersect(rays.data(), hits.data(), n, true);
+        radiance.resize(n);
+        shadeRow(inputs.data(), rngs.data(), n, radiance.data(), tile);
         for (size_t k = 0; k < n; ++k) {
-          inputs[k].cameraRay = &rays[k];
-          inputs[k].cameraHit = &hits[k];
+          const Color& L = radiance[k];
+          if (!isFinite(L)) {
+            ++tileNans;  // dropped, never splatted
+            continue;
+          }
+          tile.splat(inputs[k].filmPos, L);
+          adaptive.add(row + inputs[k].px, inputs[k].sampleIndex, L);
+          ++tileSamples;
         }
-      }
-      radiance.resize(n);
-      shadeRow(inputs.data(), rngs.data(), n, radiance.data(), tile);
-      for (size_t k = 0; k < n; ++k) {
-        const Color& L = radiance[k];
-        if (!isFinite(L)) {
-          ++tileNans;  // dropped, never splatted
-          continue;
-        }
-        tile.splat(inputs[k].filmPos, L);
-        adaptive.add(row + inputs[k].px, inputs[k].sampleIndex, L);
-        ++tileSamples;
       }
     }
     samples += tileSamples;

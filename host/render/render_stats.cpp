@@ -26,4 +26,10 @@ double RenderStats::get(const std::string& key, double fallback) const {
   return fallback;
 }
 
+std::string RenderStats::text(const std::string& key) const {
+  for (const auto& kv : texts)
+    if (kv.first == key) return kv.second;
+  return "";
+}
+
 }  // namespace rc

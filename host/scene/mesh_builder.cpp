@@ -85,7 +85,7 @@ std::vector<Vec3> angleWeightedNormals(const std::vector<Vec3>& positions, const
   std::vector<Vec3> fallback(weld.size(), Vec3(0.0f));  // a face normal, for vertices whose sum cancels
   for (const glm::uvec3& t : triangles) {
     const Vec3 p[3] = {positions[t.x], positions[t.y], positions[t.z]};
-    const Vec3 n = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+    const Vec3 n = unitTriangleNormal(p[0], p[1], p[2]);
     for (int k = 0; k < 3; ++k) {
       const uint32_t g = group[t[k]];
       acc[g] += n * cornerAngle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
@@ -115,9 +115,10 @@ Mesh buildMesh(MeshData data, const Mat4& toWorld, const MeshPolicy& policy) {
   mesh.triangles.reserve(data.triangles.size());
   for (glm::uvec3 t : data.triangles) {
     const Vec3 &a = mesh.positions[t.x], &b = mesh.positions[t.y], &c = mesh.positions[t.z];
-    const Vec3 cr = glm::cross(b - a, c - a);
-    const float area2 = glm::dot(cr, cr);
-    if (!finite(a) || !finite(b) || !finite(c) || !(area2 > 0.0f) || !std::isfinite(area2)) {
+    // In double: |cross|² of a triangle with 1e10 coordinates overflows float, and is not degenerate.
+    const glm::dvec3 cr = glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
+    const double area2 = glm::dot(cr, cr);
+    if (!finite(a) || !finite(b) || !finite(c) || !(area2 > 0.0) || !std::isfinite(area2)) {
       ++mesh.degenerateSkipped;
       continue;
     }

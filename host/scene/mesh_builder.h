@@ -1,12 +1,21 @@
 #pragma once
 // Turns object-space MeshData into a world-space Mesh, and builds the analytic primitives
 // (rectangle, cube, disk) as meshes with Mitsuba's geometry and orientation.
+#include <cmath>
 #include <string>
 
 #include "scene/mesh_data.h"
 #include "scene/scene.h"
 
 namespace rc {
+
+// Unit normal of the triangle (p0, p1, p2), computed in double: in float |cross|² overflows for
+// coordinates beyond ~1e9 and the normal would come out zero. (0, 0, 1) for a degenerate one.
+inline Vec3 unitTriangleNormal(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  const glm::dvec3 n = glm::cross(glm::dvec3(p1) - glm::dvec3(p0), glm::dvec3(p2) - glm::dvec3(p0));
+  const double len = glm::length(n);
+  return len > 0.0 && std::isfinite(len) ? Vec3(n / len) : Vec3(0, 0, 1);
+}
 
 MeshData makeRectangle();            // [-1,1]² at z=0, normal +z, uv [0,1]²
 MeshData makeCube();                 // [-1,1]³, 24 vertices (flat faces), outward normals

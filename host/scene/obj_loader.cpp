@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "core/error.h"
+#include "core/regular_file.h"
 #include "scene/value_parsing.h"
 
 namespace rc {
@@ -35,6 +36,7 @@ long long resolveIndex(const std::string& text, size_t count, const char* what) 
 }  // namespace
 
 MeshData loadObj(const std::string& path, bool flipTexCoords) {
+  requireRegularFile(path, "mesh file");
   std::ifstream in(path);
   if (!in) throw Error("cannot open mesh file '" + path + "'");
 

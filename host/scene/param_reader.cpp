@@ -50,9 +50,10 @@ const Property* ParamReader::find(const std::string& name) {
 float ParamReader::real(const std::string& name, float fallback, float lo, float hi) {
   const Property* p = find(name);
   if (!p) return fallback;
-  const double x = numberOf(name, *p);
+  // Compared as float, the type of the bounds: 0.001 is the bound 1e-3f, not just below it.
+  const float x = static_cast<float>(numberOf(name, *p));
   if (!(x >= lo && x <= hi)) throw bad(name, *p, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return static_cast<float>(x);
+  return x;
 }
 
 int ParamReader::integer(const std::string& name, int fallback, int lo, int hi) {

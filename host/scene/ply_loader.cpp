@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/regular_file.h"
 
 namespace rc {
 
@@ -117,6 +118,7 @@ int findProp(const PlyElement& e, std::initializer_list<const char*> names) {
 }  // namespace
 
 MeshData loadPly(const std::string& path) {
+  requireRegularFile(path, "mesh file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error("cannot open mesh file '" + path + "'");
   std::ostringstream ss;

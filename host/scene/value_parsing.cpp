@@ -61,6 +61,11 @@ std::vector<double> parseNumberList(const std::string& text) {
   return out;
 }
 
+// Longest value substitution may produce: far beyond any real attribute, and a <default> chain
+// that doubles its value ($a$a) fails here with the file:line of the culprit instead of
+// allocating until the process dies.
+constexpr size_t kMaxSubstitutedLength = size_t(1) << 20;
+
 static std::string substituteOnce(const std::string& text, const std::map<std::string, std::string>& params,
                                   bool& replaced) {
   replaced = false;
@@ -77,6 +82,9 @@ static std::string substituteOnce(const std::string& text, const std::map<std::s
     const std::string name = text.substr(i + 1, j - i - 1);
     auto it = params.find(name);
     if (it == params.end()) throw Error("undefined parameter '$" + name + "'");
+    if (out.size() + it->second.size() > kMaxSubstitutedLength)
+      throw Error("substituting '$" + name + "' makes the value longer than " + std::to_string(kMaxSubstitutedLength) +
+                  " characters");
     out += it->second;
     replaced = true;
     i = j;

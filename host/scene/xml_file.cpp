@@ -5,12 +5,18 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/regular_file.h"
 
 namespace rc {
 
 std::shared_ptr<XmlFile> XmlFile::load(const std::string& path, const std::string& includedFrom) {
   auto file = std::make_shared<XmlFile>();
   file->path_ = path;
+  try {
+    requireRegularFile(path, "scene file");
+  } catch (const Error& e) {
+    throw Error(includedFrom.empty() ? std::string(e.what()) : includedFrom + ": " + e.what());
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     const std::string msg = "cannot open scene file '" + path + "'";
@@ -31,7 +37,28 @@ std::shared_ptr<XmlFile> XmlFile::load(const std::string& path, const std::strin
     throw Error(atLocation(path, file->lineOfOffset(result.offset), std::string("XML parse error: ") + result.description()));
   if (!file->doc_.document_element())
     throw Error(atLocation(path, 0, "XML parse error: no root element"));
+  file->checkNestingDepth();
   return file;
+}
+
+void XmlFile::checkNestingDepth() const {
+  // Iterative walk (first child, next sibling, parent): the check itself must not recurse.
+  pugi::xml_node node = doc_.document_element();
+  int depth = 1;
+  while (node) {
+    if (depth > kMaxElementDepth)
+      throw Error(location(node) + ": elements nested deeper than " + std::to_string(kMaxElementDepth) + " levels");
+    if (pugi::xml_node child = node.first_child()) {
+      node = child;
+      ++depth;
+      continue;
+    }
+    while (node && !node.next_sibling()) {
+      node = node.parent();
+      --depth;
+    }
+    if (node) node = node.next_sibling();
+  }
 }
 
 int XmlFile::lineOfOffset(ptrdiff_t offset) const {

@@ -9,6 +9,11 @@
 
 namespace rc {
 
+// Deepest element nesting accepted. The loader's passes (substitution, elements, nested BSDFs)
+// recurse once per level; real scenes nest a dozen levels (scene, shape, twosided, blend, bsdf,
+// texture), and 100k levels overflowed the stack.
+constexpr int kMaxElementDepth = 128;
+
 class XmlFile {
  public:
   // Reads and parses `path`; throws rc::Error ("path:line: XML parse error: ...") on failure.
@@ -22,6 +27,7 @@ class XmlFile {
   std::string location(const pugi::xml_node& node) const;  // "path:line"
 
  private:
+  void checkNestingDepth() const;  // throws "path:line: elements nested deeper than ..."
   std::string path_;
   std::string text_;
   std::vector<size_t> lineStarts_;  // byte offset of the first character of each line

@@ -3,6 +3,8 @@
 # Usage: cli_tests.sh path/to/rcache  (run by CTest, label "cli")
 set -uo pipefail
 source "$(dirname "$0")/common.sh"
+# rcache's ray count for quick tests (default 64); the path tracer refuses rcache parameters.
+rays_for() { [ "$1" = rcache ] && echo "-D rays=${2:-64}"; }
 
 # expect_error NAME EXPECTED_SUBSTRING -- args...
 expect_error() {
@@ -51,7 +53,7 @@ fi
 
 # --sampler overrides the scene's <sampler> and the statistics say which one ran, for both integrators.
 for integ in path rcache; do
-  if "$RC" "$DATA/tiny.xml" --integrator $integ --sampler ldsampler -D rays=64 -o "$TMP/ld_$integ.exr" --quiet \
+  if "$RC" "$DATA/tiny.xml" --integrator $integ --sampler ldsampler $(rays_for $integ) -o "$TMP/ld_$integ.exr" --quiet \
       --stats "$TMP/ld_$integ.json" -t 2; then
     python3 -c "import json,sys; sys.exit(0 if json.load(open(sys.argv[1]))['sampler']=='ldsampler' else 1)" \
       "$TMP/ld_$integ.json" && pass "sampler_override_$integ" || fail "sampler_override_$integ" "stats: $(cat "$TMP/ld_$integ.json")"
@@ -62,7 +64,7 @@ done
 
 # --adaptive: both integrators report it, and no pixel exceeds --max-spp.
 for integ in path rcache; do
-  if "$RC" "$DATA/tiny.xml" --integrator $integ --adaptive 0.05 --spp 4 --max-spp 32 -D rays=64 -o "$TMP/ad_$integ.exr" \
+  if "$RC" "$DATA/tiny.xml" --integrator $integ --adaptive 0.05 --spp 4 --max-spp 32 $(rays_for $integ) -o "$TMP/ad_$integ.exr" \
       --quiet --stats "$TMP/ad_$integ.json" -t 2; then
     python3 -c "import json,sys; s=json.load(open(sys.argv[1])); sys.exit(0 if s['adaptive_sampling']=='on' and 4 <= s['samples_per_pixel_mean'] <= s['samples_per_pixel_max'] <= 32 else 1)" \
       "$TMP/ad_$integ.json" && pass "adaptive_$integ" || fail "adaptive_$integ" "stats: $(cat "$TMP/ad_$integ.json")"
@@ -79,8 +81,8 @@ python3 -c "import json,sys; d=json.loads(sys.argv[1]); sys.exit(0 if d['max_abs
 
 # Thread count does not change the image (per-pixel / per-item RNG streams, serial cache control flow).
 for integ in path rcache; do
-  "$RC" "$DATA/tiny.xml" --integrator $integ -D rays=64 -o "$TMP/t1_$integ.exr" --quiet -t 1 --seed 5
-  "$RC" "$DATA/tiny.xml" --integrator $integ -D rays=64 -o "$TMP/t2_$integ.exr" --quiet -t 2 --seed 5
+  "$RC" "$DATA/tiny.xml" --integrator $integ $(rays_for $integ) -o "$TMP/t1_$integ.exr" --quiet -t 1 --seed 5
+  "$RC" "$DATA/tiny.xml" --integrator $integ $(rays_for $integ) -o "$TMP/t2_$integ.exr" --quiet -t 2 --seed 5
   d=$("$RC" diff "$TMP/t1_$integ.exr" "$TMP/t2_$integ.exr" --json)
   python3 -c "import json,sys; sys.exit(0 if json.loads(sys.argv[1])['max_abs']==0 else 1)" "$d" \
     && pass "threads_independent_$integ" || fail "threads_independent_$integ" "$d"
@@ -185,7 +187,7 @@ SCENES_DIR=$(cd "$(dirname "$0")/../../scenes" && pwd)
 for scene in "$SCENES_DIR"/*.xml; do
   name=$(basename "$scene" .xml)
   for integ in path rcache; do
-    if "$RC" "$scene" --integrator $integ -D res=8 -D rays=16 --spp 1 -o "$TMP/shipped_$integ.exr" --quiet -t 2 \
+    if "$RC" "$scene" --integrator $integ -D res=8 $(rays_for $integ 16) --spp 1 -o "$TMP/shipped_$integ.exr" --quiet -t 2 \
        && "$RC" diff "$TMP/shipped_$integ.exr" "$TMP/shipped_$integ.exr" --json | grep -q '"non_finite": 0'; then
       pass "shipped_${name}_$integ"
     else fail "shipped_${name}_$integ" "exit $?"; fi

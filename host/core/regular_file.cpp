@@ -1,0 +1,19 @@
+#include "core/regular_file.h"
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "core/error.h"
+
+namespace rc {
+
+void requireRegularFile(const std::string& path, const std::string& what) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) throw Error("cannot open " + what + " '" + path + "' (" + std::strerror(errno) + ")");
+  if (S_ISDIR(st.st_mode)) throw Error("cannot open " + what + " '" + path + "': it is a directory");
+  if (!S_ISREG(st.st_mode)) throw Error("cannot open " + what + " '" + path + "': not a regular file");
+}
+
+}  // namespace rc

@@ -1,0 +1,37 @@
+#include "geometry/scene_bounds.h"
+
+#include <cmath>
+
+namespace rc {
+
+namespace {
+
+bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+}  // namespace
+
+void finiteSceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
+  lo = Vec3(INFINITY);
+  hi = Vec3(-INFINITY);
+  auto add = [&](const Vec3& p) {
+    if (!finite(p)) return;
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  };
+  for (const Mesh& m : scene.meshes)
+    for (const glm::uvec3& t : m.triangles)
+      for (int k = 0; k < 3; ++k)
+        if (t[k] < m.positions.size()) add(m.positions[t[k]]);
+  for (const Sphere& s : scene.spheres) {
+    const Vec3 a = s.center - Vec3(s.radius), b = s.center + Vec3(s.radius);
+    if (!finite(a) || !finite(b)) continue;
+    add(a);
+    add(b);
+  }
+  if (!(lo.x <= hi.x) || !finite(hi - lo)) {
+    lo = Vec3(-1.0f);
+    hi = Vec3(1.0f);
+  }
+}
+
+}  // namespace rc

@@ -1,0 +1,188 @@
+#!/usr/bin/env bash
+# Hostile inputs (issue 19): each case used to crash, hang, exhaust memory or lose data. Every
+# render runs under `timeout` and a virtual-memory limit, so a regression fails here instead of
+# taking the machine down. docs/hostile_inputs.md lists the cases and what rcache does.
+# Usage: hostile_tests.sh path/to/rcache  (run by CTest, label "cli")
+set -uo pipefail
+RC=$(realpath "$1")
+DATA=$(cd "$(dirname "$0")/data" && pwd)
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+cd "$TMP" || exit 1
+fails=0
+pass() { echo "PASS $1"; }
+fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
+
+# bounded SECONDS -- command...: runs with a 3 GB address-space limit and a wall-clock limit.
+bounded() {
+  local secs=$1; shift 2
+  ( ulimit -v 3000000; exec timeout "$secs" "$@" )
+}
+# Renders that must finish: exit 0, a finite image, within the limits.
+expect_renders() {
+  local name=$1 secs=$2; shift 3
+  local err code
+  err=$(bounded "$secs" -- "$RC" "$@" 2>&1 >/dev/null); code=$?
+  if [ $code -ne 0 ]; then fail "$name" "exit $code: $(head -c 300 <<<"$err")"; return; fi
+  pass "$name"
+}
+# Bad input: one line, the expected words, exit 1 (no crash, no timeout).
+expect_refusal() {
+  local name=$1 want=$2 secs=$3; shift 4
+  local err code
+  err=$(bounded "$secs" -- "$RC" "$@" 2>&1 >/dev/null); code=$?
+  if [ $code -ne 1 ]; then fail "$name" "exit $code: $(head -c 300 <<<"$err")"; return; fi
+  if ! grep -qF -- "$want" <<<"$err"; then fail "$name" "message lacks '$want': $err"; return; fi
+  if [ "$(grep -c . <<<"$err")" -ne 1 ]; then fail "$name" "expected one line, got: $err"; return; fi
+  pass "$name"
+}
+finite_image() { "$RC" diff "$1" "$1" --json 2>/dev/null | grep -q '"non_finite": 0'; }
+add_shape() { sed "s|</scene>|$2</scene>|" "$DATA/tiny.xml" > "$1"; }
+RCACHE=(--integrator rcache --device cpu -D rays=64 --quiet -t 2)
+
+# --- 2. Non-finite coordinates: bounds and the octree ignore what no triangle can use.
+printf 'v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nv inf 0 0\nf 1 2 3\nf 1 3 4\nf 1 2 5\n' > inf_vertex.obj
+add_shape inf_vertex.xml '<shape type="obj"><string name="filename" value="inf_vertex.obj"/><ref id="red"/></shape>'
+expect_renders inf_vertex_in_dropped_face 20 -- inf_vertex.xml "${RCACHE[@]}" -o inf_vertex.exr
+finite_image inf_vertex.exr && pass inf_vertex_image_finite || fail inf_vertex_image_finite "non-finite pixels"
+add_shape huge_sphere.xml '<shape type="sphere"><point name="center" x="3e38" y="0" z="0"/><float name="radius" value="1e38"/><ref id="red"/></shape>'
+expect_renders sphere_extent_overflows 20 -- huge_sphere.xml "${RCACHE[@]}" -o huge_sphere.exr
+
+# --- 3. Fill loops make progress: radii below float resolution, tiny fields of view.
+for fov in 1e-12 1e-20; do
+  sed "s|<float name=\"fov\" value=\"45\"/>|<float name=\"fov\" value=\"$fov\"/>|" "$DATA/tiny.xml" > fov_$fov.xml
+  expect_renders "tiny_fov_$fov" 20 -- fov_$fov.xml "${RCACHE[@]}" -o fov_$fov.exr
+done
+
+# --- 1. A full disk (here a file-size limit: EFBIG, like ENOSPC) never leaves a committed image:
+# every written file is flushed and read back before the rename.
+no_temporaries() { ! ls -A | grep -q "^\.$1\.tmp"; }
+for ext in png exr hdr; do
+  err=$( (ulimit -f 4; exec "$RC" "$DATA/tiny.xml" --integrator path -D res=128 --spp 1 -o full_$ext.$ext --quiet) 2>&1); code=$?
+  if [ $code -eq 1 ] && [ ! -e full_$ext.$ext ] && no_temporaries full_$ext && grep -q "full_$ext.$ext" <<<"$err"; then
+    pass "full_disk_$ext"
+  else fail "full_disk_$ext" "exit $code, files: $(ls -A | grep full_$ext | tr '\n' ' ') $err"; fi
+done
+# The cache file does not fit (10 KB) but the image (1.3 KB) does: the image is kept, the error named.
+err=$( (ulimit -f 6; exec "$RC" "$DATA/tiny.xml" "${RCACHE[@]}" -o kept.exr --cache-save lost.rcc) 2>&1); code=$?
+if [ $code -eq 1 ] && grep -q "lost.rcc" <<<"$err" && finite_image kept.exr && [ ! -e lost.rcc ] && no_temporaries lost; then
+  pass full_disk_cache_keeps_image
+else fail full_disk_cache_keeps_image "exit $code: $err"; fi
+
+# --- 4. SIGTERM is handled like SIGINT; temporaries never outlive the process.
+"$RC" "$DATA/tiny.xml" --integrator path -D res=256 --spp 100000 -o term.exr --quiet -t 2 &
+pid=$!
+sleep 1.5
+kill -TERM $pid
+stop_start=$SECONDS
+wait $pid; code=$?
+# Stops promptly too: cancellation is checked per pixel, not per 16×16 tile of 100k samples each.
+if [ $code -eq 143 ] && [ $((SECONDS - stop_start)) -le 10 ] && finite_image term.exr && no_temporaries term; then
+  pass sigterm_keeps_partial_image
+else fail sigterm_keeps_partial_image "exit $code after $((SECONDS - stop_start)) s"; fi
+# A signal while a finished temporary awaits its rename (RC_TEST_COMMIT_DELAY_MS holds it there):
+# one signal lets the write finish, a second abandons it; neither leaves a temporary.
+wait_for_temporary() {
+  for _ in $(seq 100); do ls -A | grep -q "^\.$1\.tmp" && return 0; sleep 0.1; done
+  return 1
+}
+for signals in 1 2; do
+  RC_TEST_COMMIT_DELAY_MS=3000 "$RC" "$DATA/tiny.xml" --integrator path -D res=8 --spp 1 -o during$signals.exr --quiet &
+  pid=$!
+  if wait_for_temporary during$signals; then
+    kill -TERM $pid
+    [ $signals -eq 2 ] && sleep 0.2 && kill -TERM $pid
+  fi
+  wait $pid; code=$?
+  if [ $signals -eq 1 ]; then
+    [ $code -eq 143 ] && finite_image during1.exr && no_temporaries during1 && pass signal_during_write_finishes \
+      || fail signal_during_write_finishes "exit $code, $(ls -A | grep during1 | tr '\n' ' ')"
+  else
+    [ $code -eq 143 ] && [ ! -e during2.exr ] && no_temporaries during2 && pass second_signal_abandons_write \
+      || fail second_signal_abandons_write "exit $code, $(ls -A | grep during2 | tr '\n' ' ')"
+  fi
+done
+# A temporary left by a killed process (its PID runs no more) goes with the next write of the name.
+touch .stale.tmp2147483646.exr .stale.tmp2147483646.rcc
+if "$RC" "$DATA/tiny.xml" "${RCACHE[@]}" -o stale.exr --cache-save stale.rcc && no_temporaries stale; then
+  pass stale_temporaries_removed
+else fail stale_temporaries_removed "$(ls -A | grep stale | tr '\n' ' ')"; fi
+
+# --- 9. Outputs are checked before the render, and never collide.
+mkdir -p a_dir.exr a_dir.rcc
+expect_refusal output_is_directory "-o a_dir.exr: is a directory" 20 -- "$DATA/tiny.xml" -o a_dir.exr
+expect_refusal cache_save_is_directory "--cache-save a_dir.rcc: is a directory" 20 -- "$DATA/tiny.xml" -o c.exr --cache-save a_dir.rcc
+# (a FIFO of our own, never a system device: a binary without the check would rename over it)
+mkfifo a_fifo.json
+expect_refusal output_is_fifo "--stats a_fifo.json: is not a regular file" 20 -- "$DATA/tiny.xml" -o f.exr --stats a_fifo.json
+expect_refusal image_and_stats_collide "-o and --stats name the same file" 20 -- "$DATA/tiny.xml" -o same.exr --stats ./same.exr
+expect_refusal cache_and_image_collide "-o and --cache-save name the same file" 20 -- "$DATA/tiny.xml" --cache-save same.exr -o same.exr
+[ ! -e same.exr ] && pass collisions_write_nothing || fail collisions_write_nothing "same.exr written"
+
+# --- 5. Deep nesting: a bound with file:line instead of a stack overflow.
+python3 - <<'PY'
+open("deep_elements.xml", "w").write('<scene version="3.0.0">' + "<shape type=\"sphere\">" * 100000 + "</shape>" * 100000 + "</scene>")
+open("deep_twosided.xml", "w").write('<scene version="3.0.0">\n<shape type="sphere">\n' + '<bsdf type="twosided">' * 30000 + '<bsdf type="diffuse"/>' + "</bsdf>" * 30000 + "</shape></scene>")
+PY
+expect_refusal deep_elements "deep_elements.xml:1: elements nested deeper than" 20 -- deep_elements.xml -o d.exr
+expect_refusal deep_twosided "deep_twosided.xml:3: elements nested deeper than" 20 -- deep_twosided.xml -o d.exr
+
+# --- 7. Inputs that are not regular files are refused instead of read forever.
+mkfifo mesh_fifo.obj
+add_shape fifo_mesh.xml '<shape type="obj"><string name="filename" value="mesh_fifo.obj"/></shape>'
+expect_refusal mesh_is_fifo "mesh_fifo.obj': not a regular file" 20 -- fifo_mesh.xml -o f.exr
+expect_refusal cache_is_dev_zero "cannot open cache file '/dev/zero': not a regular file" 20 -- "$DATA/tiny.xml" "${RCACHE[@]}" -o z.exr --cache-load /dev/zero
+expect_refusal cache_is_directory "cannot open cache file 'a_dir.rcc': it is a directory" 20 -- "$DATA/tiny.xml" "${RCACHE[@]}" -o z.exr --cache-load a_dir.rcc
+expect_refusal scene_is_dev_zero "cannot open scene file '/dev/zero': not a regular file" 20 -- /dev/zero -o z.exr
+
+# --- 10. Nothing given is silently ignored.
+expect_refusal rr_depth_negative "-D rr_depth=-3" 20 -- "$DATA/tiny.xml" -D rr_depth=-3 -o x.exr
+expect_refusal hide_emitters_banana "-D hide_emitters=banana" 20 -- "$DATA/tiny.xml" -D hide_emitters=banana -o x.exr
+expect_refusal path_cache_save "--cache-save: only with the rcache integrator" 20 -- "$DATA/tiny.xml" --integrator path --cache-save x.rcc -o x.exr
+expect_refusal path_cache_load "--cache-load: only with the rcache integrator" 20 -- "$DATA/tiny.xml" --integrator path --cache-load x.rcc -o x.exr
+expect_refusal path_aov "--aov records: only with the rcache integrator" 20 -- "$DATA/tiny.xml" --integrator path --aov records -o x.exr
+expect_refusal path_rcache_param "-D rays=64: 'rays' is an rcache parameter" 20 -- "$DATA/tiny.xml" --integrator path -D rays=64 -o x.exr
+expect_renders a_at_its_lower_bound 20 -- "$DATA/tiny.xml" "${RCACHE[@]}" -D a=0.001 -D res=8 -o a_edge.exr
+# -D max_depth overrides a max_depth the file writes literally (tiny.xml: 4): same image as the file edited.
+sed 's|<integer name="max_depth" value="4"/>|<integer name="max_depth" value="1"/>|' "$DATA/tiny.xml" > depth1.xml
+"$RC" "$DATA/tiny.xml" --integrator path -D max_depth=1 -o md_define.exr --quiet --seed 2 -t 2 \
+  && "$RC" depth1.xml --integrator path -o md_file.exr --quiet --seed 2 -t 2
+d=$("$RC" diff md_define.exr md_file.exr --json 2>&1)
+python3 -c "import json,sys; sys.exit(0 if json.loads(sys.argv[1])['max_abs']==0 else 1)" "$d" 2>/dev/null \
+  && pass define_overrides_literal_max_depth || fail define_overrides_literal_max_depth "$d"
+# A triangle with 1e10 coordinates is not degenerate (its |cross|² overflows float, not double).
+printf 'v -1e10 0 -1e10\nv 0 0 1e10\nv 1e10 0 -1e10\nf 1 2 3\n' > huge_triangle.obj
+add_shape huge_triangle.xml '<shape type="obj"><string name="filename" value="huge_triangle.obj"/><ref id="red"/></shape>'
+expect_renders huge_triangle 20 -- huge_triangle.xml --integrator path --quiet -t 2 -o huge_triangle.exr
+finite_image huge_triangle.exr && pass huge_triangle_finite || fail huge_triangle_finite "non-finite pixels"
+
+# --- 6. The cache's scene hash follows the envmap's pixels, not its path.
+mkdir -p envA envB
+"$RC" "$DATA/tiny.xml" --integrator path -D res=8 --spp 1 -o envA/sky.exr --quiet --seed 1
+sed 's|</scene>|<emitter type="envmap"><string name="filename" value="sky.exr"/></emitter></scene>|' "$DATA/tiny.xml" > envA/scene.xml
+cp envA/scene.xml envA/sky.exr envB/
+if "$RC" envA/scene.xml "${RCACHE[@]}" -D res=8 -o envA/a.exr --cache-save envA/c.rcc \
+   && "$RC" envB/scene.xml "${RCACHE[@]}" -D res=8 -o envB/b.exr --cache-load envA/c.rcc 2> envB/err; then
+  pass cache_from_another_directory
+else fail cache_from_another_directory "$(cat envB/err)"; fi
+# The same path with other pixels: the cache is stale.
+"$RC" "$DATA/tiny.xml" --integrator path -D res=8 --spp 1 -o envA/sky.exr --quiet --seed 2
+expect_refusal cache_after_envmap_changed "made for another scene" 20 -- envA/scene.xml "${RCACHE[@]}" -D res=8 -o envA/c.exr --cache-load envA/c.rcc
+
+# --- 7. A <default> chain that doubles its value is refused where it outgrows any real value.
+python3 - <<'PY'
+lines = ['<scene version="3.0.0">', '<default name="p0" value="xxxxxxxx"/>']
+lines += ['<default name="p%d" value="$p%d$p%d"/>' % (i, i - 1, i - 1) for i in range(1, 41)]
+open("doubling.xml", "w").write("\n".join(lines + ["</scene>"]))
+PY
+expect_refusal default_doubling_chain "doubling.xml:20:" 20 -- doubling.xml -o d.exr
+# A valid --spp whose final-pass batch (one film row × spp samples) cannot fit is refused up front.
+expect_refusal spp_beyond_memory "--spp 1048576: the rcache final pass shades a film row of 32 pixels" 20 -- \
+  "$DATA/tiny.xml" "${RCACHE[@]}" -D res=32 --spp 1048576 -o huge_spp.exr
+# A bad rcache parameter in the file is reported at its line.
+sed 's|<integrator type="path"><integer name="max_depth" value="4"/></integrator>|<integrator type="rcache">\n<integer name="max_depth" value="4"/>\n<float name="a" value="-2"/></integrator>|' \
+  "$DATA/tiny.xml" > bad_param.xml
+expect_refusal rcache_param_file_line "bad_param.xml:7: <integrator type=\"rcache\">: parameter 'a'" 20 -- bad_param.xml --device cpu -o bp.exr
+
+echo "$fails failure(s)"
+[ $fails -eq 0 ]
