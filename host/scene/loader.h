@@ -25,7 +25,8 @@ class Loader {
   void checkUnused(const Element& e);
   // Unexpected nested element: always an error (a misplaced element is a structural mistake).
   [[noreturn]] void unexpectedChild(const Element& parent, const pugi::xml_node& child);
-  // Resolves a file name written in `e` relative to its XML file (then the main scene's folder).
+  // Resolves a file name written in `e` relative to its XML file, then the <path> folders, then the
+  // main scene's folder.
   std::string resolvePath(const Element& e, const std::string& filename) const;
   std::string anonymousName(const std::string& type);  // "<type>#<n>"
 
@@ -62,6 +63,7 @@ class Loader {
   std::vector<std::string> includeStack_;      // canonical paths of the files being read
   std::vector<std::shared_ptr<XmlFile>> files_;
   std::string mainDir_;
+  std::vector<std::string> searchPaths_;       // <path value> folders, the latest first
   std::map<std::string, Named> ids_;
   std::map<const Bsdf*, int> bsdfIndices_;
   BsdfPtr defaultBsdf_;

@@ -87,6 +87,26 @@ void Loader::substituteTree(const std::shared_ptr<XmlFile>& file, pugi::xml_node
 void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
   const std::string tag = node.name();
   if (tag == "default") return;  // handled during substitution
+  if (tag == "path") {
+    // Mitsuba's <path value>: a folder prepended to the file resolver's search list; relative to
+    // this file's folder first, then to the folders already listed.
+    const pugi::xml_attribute value = node.attribute("value");
+    if (!value || std::string(value.value()).empty()) throw LocatedError(whereOf(*file, node) + ": missing attribute 'value'");
+    for (const pugi::xml_attribute& a : node.attributes())
+      if (std::string(a.name()) != "value")
+        throw LocatedError(whereOf(*file, node) + ": unsupported attribute '" + a.name() + "'");
+    fs::path folder = value.value();
+    if (folder.is_relative()) {
+      fs::path found = (fs::path(file->path()).parent_path() / folder).lexically_normal();
+      for (auto it = searchPaths_.begin(); !fs::is_directory(found) && it != searchPaths_.end(); ++it)
+        found = (fs::path(*it) / folder).lexically_normal();
+      folder = found;
+    }
+    if (!fs::is_directory(folder))
+      throw LocatedError(whereOf(*file, node) + ": folder '" + folder.string() + "' not found");
+    searchPaths_.insert(searchPaths_.begin(), folder.string());
+    return;
+  }
   if (tag == "include") {
     const pugi::xml_attribute fn = node.attribute("filename");
     if (!fn) throw LocatedError(whereOf(*file, node) + ": missing attribute 'filename'");
@@ -159,6 +179,10 @@ std::string Loader::resolvePath(const Element& e, const std::string& filename) c
   if (p.is_absolute()) return p.string();
   const fs::path local = (fs::path(e.file->path()).parent_path() / p).lexically_normal();
   if (fs::exists(local)) return local.string();
+  for (const std::string& folder : searchPaths_) {  // <path> folders, the latest first
+    const fs::path candidate = (fs::path(folder) / p).lexically_normal();
+    if (fs::exists(candidate)) return candidate.string();
+  }
   // Mitsuba resolves against the main scene's folder; accept that too for included files.
   const fs::path main = (fs::path(mainDir_) / p).lexically_normal();
   if (fs::exists(main)) return main.string();
