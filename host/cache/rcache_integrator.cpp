@@ -373,7 +373,9 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     for (size_t i = 0; i < n; ++i) {
       const ShadePoint& sp = prim[i].sp;
       const LookupAov& la = repAov[slot[rep[i]]];
-      const Color L = prim[i].Le + direct[i] + repInd[slot[rep[i]]];
+      const Bsdf* bsdf = sp.active ? scene.bsdfs[sp.hit.bsdf].get() : nullptr;
+      const Color tint = bsdf && bsdf->tinted() ? bsdf->tint(sp.hit.uv, sp.wo) : Color(1.0f);  // Bsdf::tint
+      const Color L = prim[i].Le + tint * (direct[i] + repInd[slot[rep[i]]]);
       const int px = sp.pixel % W, py = sp.pixel / W;
       if (isFinite(L)) {
         tile.splat(prim[i].filmPos, L);

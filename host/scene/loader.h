@@ -10,6 +10,7 @@
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
 #include "scene/xml_file.h"
+#include "texture/texture.h"
 
 namespace rc {
 
@@ -35,13 +36,15 @@ class Loader {
   struct Named {
     Kind kind = Kind::Other;
     BsdfPtr bsdf;
+    TexturePtr texture;
     std::string where;
   };
-  void registerId(const Element& e, Kind kind, BsdfPtr bsdf = nullptr);
+  void registerId(const Element& e, Kind kind, BsdfPtr bsdf = nullptr, TexturePtr texture = nullptr);
   const Named& resolveRef(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref);
 
   BsdfPtr buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
   BsdfPtr defaultBsdf();
+  TexturePtr buildTexture(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
   int bsdfIndex(const BsdfPtr& bsdf);  // index into scene_.bsdfs, adding it on first use
   void buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
   // Top-level emitters (shapeMesh = shapeSphere = -1) and area emitters of a shape.

@@ -145,10 +145,7 @@ void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   } else if (tag == "integrator") {
     buildIntegrator(file, node);
   } else if (tag == "texture") {
-    // BSDF parameters are constants here (no texture lookups), so no texture plugin exists.
-    Element e = parseElement(file, node);
-    unsupported(e.where() + ": unknown plugin '" + e.type + "' (textures are not supported)");
-    if (!e.id.empty()) registerId(e, Kind::Texture);
+    buildTexture(file, node);  // registers its id for <ref name="..." id="..."/> in BSDFs
   } else if (tag == "film" || tag == "sampler" || tag == "rfilter") {
     throw LocatedError(whereOf(*file, node) + ": <" + tag + "> must be inside " +
                        (tag == "rfilter" ? "<film>" : "<sensor>"));
@@ -193,13 +190,14 @@ std::string Loader::anonymousName(const std::string& type) {
   return type + "#" + std::to_string(anonymousCount_[type]++);
 }
 
-void Loader::registerId(const Element& e, Kind kind, BsdfPtr bsdf) {
+void Loader::registerId(const Element& e, Kind kind, BsdfPtr bsdf, TexturePtr texture) {
   if (e.id.empty()) return;
   auto it = ids_.find(e.id);
   if (it != ids_.end()) e.fail("duplicate id '" + e.id + "' (first defined at " + it->second.where + ")");
   Named n;
   n.kind = kind;
   n.bsdf = std::move(bsdf);
+  n.texture = std::move(texture);
   n.where = e.file->location(e.node);
   ids_[e.id] = n;
 }

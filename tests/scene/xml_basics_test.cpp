@@ -285,7 +285,7 @@ TEST(SceneXml, UnknownElementsAndMisplacedOnes) {
   expectError([&] { loadText(dir, sceneXml("<shape type=\"cube\"><film type=\"hdrfilm\"/></shape>")); },
               {"unexpected <film> inside <shape>"});
   expectError([&] { loadText(dir, sceneXml("<shape type=\"cube\" color=\"red\"/>")); }, {"unsupported attribute 'color'"});
-  expectError([&] { loadText(dir, sceneXml("<texture type=\"bitmap\" id=\"t\"/>")); }, {"unknown plugin 'bitmap'"});
+  expectError([&] { loadText(dir, sceneXml("<texture type=\"voronoi\" id=\"t\"/>")); }, {"unknown plugin 'voronoi'"});
   expectError([&] { loadText(dir, sceneXml("<shape/>")); }, {"missing attribute 'type'"});
 }
 
