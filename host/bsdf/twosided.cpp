@@ -64,7 +64,7 @@ std::shared_ptr<Bsdf> createTwoSidedBsdf(const Properties& props, const std::vec
     if (nested.size() == 2 && b->tinted())
       throw Error("<bsdf type=\"twosided\">: a textured reflectance on one of two different sides is not supported");
     // Mitsuba accepts only one-sided BSDFs here; these two already have a back side.
-    if (b->typeName() == "twosided" || b->typeName() == "dielectric")
+    if (b->typeName() == "twosided" || b->typeName() == "dielectric" || b->typeName() == "thindielectric")
       throw Error("<bsdf type=\"twosided\">: nested '" + b->typeName() + "' is already two-sided");
   }
   (void)props;

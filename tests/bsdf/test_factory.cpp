@@ -37,7 +37,7 @@ void expectError(const Properties& p, const std::vector<BsdfPtr>& nested, const 
 }
 
 TEST(BsdfFactory, KnownTypes) {
-  for (const char* t : {"diffuse", "roughconductor", "conductor", "plastic", "roughplastic", "dielectric", "twosided",
+  for (const char* t : {"diffuse", "roughconductor", "conductor", "plastic", "roughplastic", "dielectric", "thindielectric", "twosided",
                         "blendbsdf"})
     EXPECT_TRUE(isKnownBsdfType(t)) << t;
   EXPECT_FALSE(isKnownBsdfType("roughdielectric"));
