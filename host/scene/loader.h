@@ -52,6 +52,9 @@ class Loader {
   void buildSensor(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
   void buildIntegrator(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
 
+  // The top-level area emitter `id` names, or null.
+  const std::pair<std::shared_ptr<XmlFile>, pugi::xml_node>* areaEmitter(const std::string& id) const;
+
   const LoadOptions& options() const { return options_; }
   Scene& scene() { return scene_; }
 
@@ -68,6 +71,9 @@ class Loader {
   std::string mainDir_;
   std::vector<std::string> searchPaths_;       // <path value> folders, the latest first
   std::map<std::string, Named> ids_;
+  // Top-level <emitter type="area" id> of each file read: Mitsuba attaches them to the shapes that
+  // <ref> them, also from before their definition.
+  std::map<std::string, std::pair<std::shared_ptr<XmlFile>, pugi::xml_node>> areaEmitters_;
   std::map<const Bsdf*, int> bsdfIndices_;
   BsdfPtr defaultBsdf_;
   std::map<std::string, int> anonymousCount_;

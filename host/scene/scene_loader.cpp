@@ -57,6 +57,9 @@ void Loader::processFile(const std::shared_ptr<XmlFile>& file, const std::string
 
   // Substitution runs in document order so a <default> applies to what follows it, as in Mitsuba.
   for (pugi::xml_node child : root.children()) substituteTree(file, child, true);
+  for (const pugi::xml_node& child : root.children("emitter"))
+    if (std::string(child.attribute("type").value()) == "area" && child.attribute("id"))
+      areaEmitters_.emplace(child.attribute("id").value(), std::make_pair(file, child));
   for (const pugi::xml_node& child : root.children())
     if (child.type() == pugi::node_element) sceneChild(file, child);
 }
@@ -139,6 +142,8 @@ void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   } else if (tag == "shape") {
     buildShape(file, node);
   } else if (tag == "emitter") {
+    if (areaEmitter(node.attribute("id").value()) && std::string(node.attribute("type").value()) == "area")
+      return;  // built by the shapes that refer to it
     buildEmitter(file, node, -1, -1);
   } else if (tag == "sensor") {
     buildSensor(file, node);
@@ -184,6 +189,11 @@ std::string Loader::resolvePath(const Element& e, const std::string& filename) c
   const fs::path main = (fs::path(mainDir_) / p).lexically_normal();
   if (fs::exists(main)) return main.string();
   return local.string();  // the caller reports it missing under the name users expect
+}
+
+const std::pair<std::shared_ptr<XmlFile>, pugi::xml_node>* Loader::areaEmitter(const std::string& id) const {
+  auto it = areaEmitters_.find(id);
+  return it == areaEmitters_.end() ? nullptr : &it->second;
 }
 
 std::string Loader::anonymousName(const std::string& type) {

@@ -44,9 +44,15 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   // Nested material and emitter (the emitter is built once the shape has its index).
   BsdfPtr bsdf;
   pugi::xml_node emitterNode;
+  std::shared_ptr<XmlFile> emitterFile = file;
   for (const pugi::xml_node& child : e.children) {
     const std::string tag = child.name();
-    if (tag == "bsdf" || tag == "ref") {
+    const auto* sharedEmitter = tag == "ref" ? areaEmitter(child.attribute("id").value()) : nullptr;
+    if (sharedEmitter) {
+      if (emitterNode) throw LocatedError(whereOf(*file, child) + ": a shape takes one emitter, this is the second");
+      emitterFile = sharedEmitter->first;
+      emitterNode = sharedEmitter->second;
+    } else if (tag == "bsdf" || tag == "ref") {
       if (bsdf) throw LocatedError(whereOf(*file, child) + ": a shape takes one bsdf, this is the second");
       if (tag == "bsdf") {
         bsdf = buildBsdf(file, child);
@@ -60,6 +66,7 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     } else if (tag == "emitter") {
       if (emitterNode) throw LocatedError(whereOf(*file, child) + ": a shape takes one emitter, this is the second");
       emitterNode = child;
+      emitterFile = file;
     } else {
       unexpectedChild(e, child);
     }
@@ -127,7 +134,7 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   }
   checkUnused(e);
   registerId(e, Kind::Shape);
-  if (emitterNode) buildEmitter(file, emitterNode, meshIndex, sphereIndex);
+  if (emitterNode) buildEmitter(emitterFile, emitterNode, meshIndex, sphereIndex);
 }
 
 }  // namespace rc

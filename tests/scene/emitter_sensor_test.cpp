@@ -206,3 +206,23 @@ TEST(SceneIntegrator, Errors) {
 
 }  // namespace
 }  // namespace rc::test
+
+namespace rc::test {
+namespace {
+
+// Mitsuba attaches a top-level area emitter to every shape that refers to it, also before its
+// definition in the file.
+TEST(SceneEmitters, SharedAreaEmitterByReference) {
+  TempDir dir;
+  const Scene s = loadText(dir, sceneXml("<shape type=\"rectangle\"><ref id=\"glow\"/></shape>"
+                                         "<shape type=\"sphere\"><bsdf type=\"diffuse\"/><ref id=\"glow\"/></shape>"
+                                         "<emitter type=\"area\" id=\"glow\"><rgb name=\"radiance\" value=\"2\"/></emitter>"));
+  ASSERT_EQ(s.emitters.size(), 2u);
+  EXPECT_EQ(s.emitters[0].mesh, 0);
+  EXPECT_EQ(s.emitters[1].sphere, 0);
+  EXPECT_EQ(s.emitters[1].radiance, Color(2.0f));
+  expectError([&] { loadText(dir, sceneXml("<emitter type=\"area\"/>")); }, {"must be nested inside a <shape>"});
+}
+
+}  // namespace
+}  // namespace rc::test
