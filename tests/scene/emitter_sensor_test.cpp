@@ -204,12 +204,6 @@ TEST(SceneIntegrator, Errors) {
               {"unsupported parameter 'to_world'"});
 }
 
-}  // namespace
-}  // namespace rc::test
-
-namespace rc::test {
-namespace {
-
 // Mitsuba attaches a top-level area emitter to every shape that refers to it, also before its
 // definition in the file.
 TEST(SceneEmitters, SharedAreaEmitterByReference) {
