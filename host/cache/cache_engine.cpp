@@ -122,7 +122,12 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
   });
   std::vector<Color> ind;
   indirect(pts, ind, nullptr, relaxedScale);
-  for (size_t i = 0; i < pts.size(); ++i) out[i] += ind[i];
+  for (size_t i = 0; i < pts.size(); ++i) {
+    out[i] += ind[i];
+    // A textured factor scales everything the point reflects (Bsdf::tint), after the cache.
+    const Bsdf* bsdf = pts[i].active ? ctx_.scene.bsdfs[pts[i].hit.bsdf].get() : nullptr;
+    if (bsdf && bsdf->tinted()) out[i] *= bsdf->tint(pts[i].hit.uv, pts[i].wo);
+  }
 }
 
 void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color>& out, std::vector<LookupAov>* aov,

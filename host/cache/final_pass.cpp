@@ -201,7 +201,9 @@ void FinalPass::splat(const Samples& s, const std::vector<Color>& repIndirect, c
   for (size_t i = 0; i < s.prim.size(); ++i) {
     const ShadePoint& sp = s.prim[i].sp;
     const LookupAov& la = repAov[slot[s.rep[i]]];
-    const Color L = s.prim[i].Le + s.direct[i] + repIndirect[slot[s.rep[i]]];
+    const Bsdf* bsdf = sp.active ? run_.ctx.scene.bsdfs[sp.hit.bsdf].get() : nullptr;
+    const Color tint = bsdf && bsdf->tinted() ? bsdf->tint(sp.hit.uv, sp.wo) : Color(1.0f);  // Bsdf::tint
+    const Color L = s.prim[i].Le + tint * (s.direct[i] + repIndirect[slot[s.rep[i]]]);
     const int px = sp.pixel % W, py = sp.pixel / W;
     if (isFinite(L)) {
       tile.splat(s.prim[i].filmPos, L);
