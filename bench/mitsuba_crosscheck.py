@@ -1,35 +1,29 @@
 #!/usr/bin/env python3
-"""Mitsuba 3 cross-check of rcache's path tracer (issue 2) -- a one-off measurement script.
+"""Mitsuba 3 cross-check of rcache's path tracer on every shipped scene (a measurement script).
 
-Nothing in the product or its tests needs Mitsuba; this script is the only place it is used.
+Nothing in the product or its tests needs Mitsuba; bench scripts are the only place it is used.
+Run it with the bench venv (bench/run.sh installs it):
+  export DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM-19.so
+  /root/.cache/rcache/bench-venv/bin/python bench/mitsuba_crosscheck.py --res 128 \
+      --spp-ref 4096 --spp 1024 --threads 2 [--scenes envmap_product corridor] [--json-out FILE]
 
-For every shipped scene it renders
-  * a reference with Mitsuba 3 (variant scalar_rgb, the scene file as is, -D res/spp),
-  * rcache --integrator path at --spp, seed A, and
-  * rcache --integrator path at --spp, seed B (to measure rcache's own noise level),
-and prints one JSON line per scene:
-  scene, res, spp_mitsuba, spp_rcache,
-  relmse_vs_mitsuba   relMSE(rcache seed A, Mitsuba)
-  relmse_noise        relMSE(rcache seed A, rcache seed B)  -- rcache's own noise level
-  noise_ratio         relmse_vs_mitsuba / relmse_noise. For unbiased renderers with
-                      independent noise this is (1 + spp_rcache/spp_mitsuba) / 2
-                      (0.625 for 4x Mitsuba spp); >> that means a systematic difference.
-  relmse_blocks_*     the same two relMSEs on 8x8-pixel block means (noise mostly averaged
-                      out, so bias shows clearly)
-  mean_ratio          per-channel mean(rcache A) / mean(Mitsuba)
-  mean_ratio_noise    per-channel mean(rcache A) / mean(rcache B)  (noise of that ratio)
-  time_mitsuba_s, time_rcache_s
-relMSE = mean over pixels and channels of (x - r)^2 / (r^2 + 0.01), r = the Mitsuba image
-(for the noise line too, so both numbers share one denominator).
-
-How to run (from the repository root, after building build-rel):
-  pip install mitsuba numpy           # into the python3 that runs this script
-  python3 bench/mitsuba_crosscheck.py --rcache build-rel/rcache --res 64 \
-      --spp-mitsuba 4096 --spp-rcache 1024 --threads 2 [--scenes cornell_glossy furnace]
-Images are kept in --outdir (default /tmp/rcache_mitsuba_xcheck) for inspection:
-  SCENE_mitsuba.exr, SCENE_rcache_a.exr, SCENE_rcache_b.exr.
+Per scene, from the scene file as is (-D res/spp; Mitsuba's sampler set to `independent`):
+  ref   Mitsuba (--variant, default llvm_ad_rgb) at --spp-ref, seed 0: the ground truth;
+  mi1, mi2  Mitsuba at --spp, seeds 1 and 2: Mitsuba's own error and noise at that spp;
+  rc    rcache --integrator path at --spp.
+Checks (issue 14), each printed with its figures and a pass flag:
+  relmse    relMSE(rc, ref) <= 1.3 x relMSE(mi1, ref)           (equal spp, same reference)
+  means     |mean(rc)/mean(ref) - 1| <= 0.3 % per channel
+  blocks    every 16x16-pixel block mean of rc is within 4 x Mitsuba's expected block error:
+            |rc_b - ref_b| / e_b <= 4, where e_b = sqrt(s_b^2 (1 + spp/spp_ref)) and s_b^2 =
+            sum over the block's pixels of (mi1 - mi2)^2 / 2, divided by (16*16)^2 (the variance of
+            a block mean at --spp, from Mitsuba's own pixel noise). A block far above that is a
+            bias, not noise. The worst block's position and ratio are reported.
+relMSE = mean over pixels and channels of (x - r)^2 / (r^2 + 0.01), r = the reference.
+Images are kept in --outdir for inspection: SCENE_{ref,mi1,mi2,rc}.exr.
 """
 import argparse
+import glob
 import json
 import os
 import re
@@ -39,35 +33,62 @@ import time
 
 import numpy as np
 
-SCENES = ["cornell_glossy", "cornell_diffuse", "glossy_sweep", "aniso_sphere", "curved_glossy", "furnace"]
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BLOCK = 16
+
+
+def shipped_scenes(scenes_dir):
+    return sorted(os.path.splitext(os.path.basename(p))[0] for p in glob.glob(os.path.join(scenes_dir, "*.xml")))
 
 
 def relmse(x, r):
     return float(np.mean((x - r) ** 2 / (r * r + 0.01)))
 
 
-def blocks(img, b=8):
+def block_sums(img, b=BLOCK):
     h, w, c = img.shape
     h2, w2 = h // b * b, w // b * b
-    return img[:h2, :w2].reshape(h2 // b, b, w2 // b, b, c).mean(axis=(1, 3))
+    return img[:h2, :w2].reshape(h2 // b, b, w2 // b, b, c).sum(axis=(1, 3))
 
 
-def load(mi, path):
-    a = np.array(mi.Bitmap(path), dtype=np.float64)
-    return a[..., :3]
+def block_check(rc, ref, mi1, mi2, spp, spp_ref):
+    n = BLOCK * BLOCK
+    diff = np.abs(block_sums(rc) - block_sums(ref)) / n
+    var_mean = block_sums((mi1 - mi2) ** 2 / 2.0) / (n * n)
+    expected = np.sqrt(var_mean * (1.0 + spp / spp_ref))
+    ratio = np.where(expected > 0, diff / np.maximum(expected, 1e-30), np.where(diff > 0, np.inf, 0.0))
+    worst = np.unravel_index(int(np.argmax(ratio)), ratio.shape)
+    mi_diff = np.abs(block_sums(mi1) - block_sums(ref)) / n
+    mi_ratio = np.where(expected > 0, mi_diff / np.maximum(expected, 1e-30), 0.0)
+    return dict(block_max_ratio=float(ratio.max()), block_worst_yx_channel=[int(worst[0] * BLOCK), int(worst[1] * BLOCK), int(worst[2])],
+                block_rms_ratio=float(np.sqrt(np.mean(ratio ** 2))),
+                block_max_ratio_mitsuba=float(mi_ratio.max()), block_rms_ratio_mitsuba=float(np.sqrt(np.mean(mi_ratio ** 2))),
+                blocks=int(ratio.size // ratio.shape[2]))
+
+
+def mitsuba_scene_copy(scene_path, sampler):
+    """A copy of the scene file next to it (relative paths keep working) with the sampler replaced."""
+    with open(scene_path) as f:
+        text = f.read()
+    text = re.sub(r'<sampler type="[a-z]+">', '<sampler type="%s">' % sampler, text)
+    path = os.path.join(os.path.dirname(scene_path), ".xcheck_" + os.path.basename(scene_path))
+    with open(path, "w") as f:
+        f.write(text)
+    return path
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--rcache", default="build-rel/rcache")
-    ap.add_argument("--scenes-dir", default="scenes")
-    ap.add_argument("--scenes", nargs="*", default=SCENES)
-    ap.add_argument("--res", type=int, default=64)
-    ap.add_argument("--spp-mitsuba", type=int, default=4096)
-    ap.add_argument("--spp-rcache", type=int, default=1024)
+    ap.add_argument("--rcache", default=os.path.join(ROOT, "build", "rcache"))
+    ap.add_argument("--scenes-dir", default=os.path.join(ROOT, "scenes"))
+    ap.add_argument("--scenes", nargs="*", default=None, help="default: every scenes/*.xml")
+    ap.add_argument("--res", type=int, default=128)
+    ap.add_argument("--spp-ref", type=int, default=4096)
+    ap.add_argument("--spp", type=int, default=1024)
     ap.add_argument("--threads", type=int, default=2)
-    ap.add_argument("--seeds", type=int, nargs=2, default=[1, 2])
+    ap.add_argument("--variant", default="llvm_ad_rgb")
     ap.add_argument("--outdir", default="/tmp/rcache_mitsuba_xcheck")
+    ap.add_argument("--json-out", default=None, help="append the per-scene JSON lines to this file too")
     ap.add_argument("--define", "-D", action="append", default=[], help="extra scene parameter name=value (both renderers)")
     ap.add_argument("--mitsuba-sampler", default="independent",
                     help="sampler Mitsuba renders with (the scene's own: 'scene'). Default independent: Mitsuba "
@@ -77,68 +98,57 @@ def main():
     args = ap.parse_args()
 
     import mitsuba as mi
-    mi.set_variant("scalar_rgb")
+    mi.set_variant(args.variant)
+    mi.set_log_level(mi.LogLevel.Warn)
     os.makedirs(args.outdir, exist_ok=True)
     extra = dict(d.split("=", 1) for d in args.define)
-
-    for name in args.scenes:
+    names = args.scenes or shipped_scenes(args.scenes_dir)
+    failures = 0
+    for name in names:
         scene_path = os.path.join(args.scenes_dir, name + ".xml")
-        params = {"res": args.res, "spp": args.spp_mitsuba, **extra}
-
-        # Mitsuba reference (its own thread pool, one thread per core), from a copy of the scene file
-        # next to it (relative mesh paths) with the sampler type replaced.
+        out = {k: os.path.join(args.outdir, "%s_%s.exr" % (name, k)) for k in ("ref", "mi1", "mi2", "rc")}
+        load_path = scene_path if args.mitsuba_sampler == "scene" else mitsuba_scene_copy(scene_path, args.mitsuba_sampler)
         t0 = time.time()
-        load_path = scene_path
-        if args.mitsuba_sampler != "scene":
-            with open(scene_path) as f:
-                text = f.read()
-            text = re.sub(r'<sampler type="[a-z]+">', '<sampler type="%s">' % args.mitsuba_sampler, text)
-            load_path = os.path.join(os.path.dirname(scene_path), ".xcheck_" + name + ".xml")
-            with open(load_path, "w") as f:
-                f.write(text)
         try:
-            scene = mi.load_file(load_path, **params)
+            for key, spp, seed in (("ref", args.spp_ref, 0), ("mi1", args.spp, 1), ("mi2", args.spp, 2)):
+                scene = mi.load_file(load_path, **{"res": args.res, "spp": spp, **extra})
+                mi.Bitmap(mi.render(scene, spp=spp, seed=seed)).write(out[key])
         finally:
             if load_path != scene_path:
                 os.remove(load_path)
-        img = mi.render(scene, spp=args.spp_mitsuba, seed=0)
-        ref_path = os.path.join(args.outdir, name + "_mitsuba.exr")
-        mi.Bitmap(img).write(ref_path)
         t_mi = time.time() - t0
-
-        # rcache, two seeds.
         t0 = time.time()
-        outs = []
-        for tag, seed in zip("ab", args.seeds):
-            out = os.path.join(args.outdir, f"{name}_rcache_{tag}.exr")
-            cmd = [args.rcache, scene_path, "-o", out, "--integrator", "path", "--spp", str(args.spp_rcache),
-                   "-D", f"res={args.res}", "-D", f"spp={args.spp_rcache}", "-t", str(args.threads),
-                   "--seed", str(seed), "--quiet"]
-            for k, v in extra.items():
-                cmd += ["-D", f"{k}={v}"]
-            subprocess.run(cmd, check=True)
-            outs.append(out)
-        t_rc = (time.time() - t0) / 2
+        cmd = [args.rcache, scene_path, "-o", out["rc"], "--integrator", "path", "--spp", str(args.spp),
+               "-D", "res=%d" % args.res, "-D", "spp=%d" % args.spp, "-t", str(args.threads), "--seed", "1", "--quiet"]
+        for k, v in extra.items():
+            cmd += ["-D", "%s=%s" % (k, v)]
+        subprocess.run(cmd, check=True)
+        t_rc = time.time() - t0
 
-        r = load(mi, ref_path)
-        a = load(mi, outs[0])
-        b = load(mi, outs[1])
-        rel = relmse(a, r)
-        noise = float(np.mean((a - b) ** 2 / (r * r + 0.01)))
-        rb, ab, bb = blocks(r), blocks(a), blocks(b)
-        rel_blk = relmse(ab, rb)
-        noise_blk = float(np.mean((ab - bb) ** 2 / (rb * rb + 0.01)))
-        row = {
-            "scene": name, "res": args.res, "spp_mitsuba": args.spp_mitsuba, "spp_rcache": args.spp_rcache,
-            "relmse_vs_mitsuba": rel, "relmse_noise": noise,
-            "noise_ratio": rel / noise if noise > 0 else None,
-            "relmse_blocks_vs_mitsuba": rel_blk, "relmse_blocks_noise": noise_blk,
-            "mean_ratio": [float(x) for x in a.mean(axis=(0, 1)) / r.mean(axis=(0, 1))],
-            "mean_ratio_noise": [float(x) for x in a.mean(axis=(0, 1)) / b.mean(axis=(0, 1))],
-            "mean_mitsuba": [float(x) for x in r.mean(axis=(0, 1))],
-            "time_mitsuba_s": round(t_mi, 1), "time_rcache_s": round(t_rc, 1),
-        }
-        print(json.dumps(row), flush=True)
+        img = {k: np.array(mi.Bitmap(p), dtype=np.float64)[..., :3] for k, p in out.items()}
+        ref = img["ref"]
+        rel_rc, rel_mi = relmse(img["rc"], ref), relmse(img["mi1"], ref)
+        mean_ratio = img["rc"].mean(axis=(0, 1)) / np.maximum(ref.mean(axis=(0, 1)), 1e-30)
+        mean_ratio_mi = img["mi1"].mean(axis=(0, 1)) / np.maximum(ref.mean(axis=(0, 1)), 1e-30)
+        row = dict(scene=name, res=args.res, spp_ref=args.spp_ref, spp=args.spp, variant=args.variant,
+                   relmse_rcache=rel_rc, relmse_mitsuba=rel_mi, relmse_ratio=rel_rc / rel_mi if rel_mi > 0 else None,
+                   mean_ratio=[round(float(x), 5) for x in mean_ratio],
+                   mean_ratio_mitsuba=[round(float(x), 5) for x in mean_ratio_mi],
+                   mean_ref=[float(x) for x in ref.mean(axis=(0, 1))],
+                   **block_check(img["rc"], ref, img["mi1"], img["mi2"], args.spp, args.spp_ref),
+                   time_mitsuba_s=round(t_mi, 1), time_rcache_s=round(t_rc, 1))
+        row["pass_relmse"] = row["relmse_ratio"] is not None and row["relmse_ratio"] <= 1.3
+        row["pass_means"] = bool(np.all(np.abs(mean_ratio - 1.0) <= 0.003))
+        row["pass_blocks"] = row["block_max_ratio"] <= 4.0
+        row["pass"] = row["pass_relmse"] and row["pass_means"] and row["pass_blocks"]
+        failures += not row["pass"]
+        line = json.dumps(row)
+        print(line, flush=True)
+        if args.json_out:
+            with open(args.json_out, "a") as f:
+                f.write(line + "\n")
+    print("crosscheck: %d of %d scenes pass" % (len(names) - failures, len(names)), file=sys.stderr)
+    return 1 if failures else 0
 
 
 if __name__ == "__main__":

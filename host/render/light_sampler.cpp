@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "geometry/face_normal.h"
 #include "render/distribution.h"
+#include "render/envmap_light.h"
 
 namespace rc {
 
@@ -17,21 +18,6 @@ Vec3 uniformSphere(Vec2 u) {
   const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
   const float phi = 2.0f * kPi * u.y;
   return Vec3(r * std::cos(phi), r * std::sin(phi), z);
-}
-
-// Mitsuba 3 envmap orientation (local frame): θ from +y, φ measured so that
-// d = (sinθ sinφ, cosθ, −sinθ cosφ) and u = φ/2π, v = θ/π.
-Vec3 envDirection(float u, float v) {
-  const float theta = v * kPi, phi = u * 2.0f * kPi;
-  const float st = std::sin(theta);
-  return Vec3(st * std::sin(phi), std::cos(theta), -st * std::cos(phi));
-}
-
-Vec2 envUv(const Vec3& d) {
-  float u = std::atan2(d.x, -d.z) * (0.5f * kInvPi);
-  if (u < 0.0f) u += 1.0f;
-  const float v = std::acos(glm::clamp(d.y, -1.0f, 1.0f)) * kInvPi;
-  return Vec2(u, v);
 }
 
 struct Entry {
@@ -46,11 +32,7 @@ struct Entry {
   float boundRadius = 0.0f;
   // area on a sphere
   int sphere = -1;
-  // envmap
-  Mat3 toWorld{1.0f}, toLocal{1.0f};
-  Distribution1D rows;                 // marginal over rows
-  std::vector<Distribution1D> columns;  // conditional per row
-  std::vector<double> pixelPdfUv;      // pdf in (u,v) ∈ [0,1]² per pixel
+  std::shared_ptr<const EnvmapLight> envmap;
 };
 
 }  // namespace
@@ -65,26 +47,6 @@ struct LightSampler::Impl {
   explicit Impl(const Scene& s) : scene(s) {}
 
   float selectProb(int e) const { return static_cast<float>(select.probability(static_cast<size_t>(e))); }
-
-  Color envLookup(const Entry& e, const Vec3& dirWorld, size_t* pixel = nullptr) const {
-    const Emitter& em = scene.emitters[e.emitter];
-    const Vec3 d = glm::normalize(e.toLocal * dirWorld);
-    const Vec2 uv = envUv(d);
-    const int x = std::min(em.envWidth - 1, static_cast<int>(uv.x * em.envWidth));
-    const int y = std::min(em.envHeight - 1, static_cast<int>(uv.y * em.envHeight));
-    const size_t i = static_cast<size_t>(y) * em.envWidth + x;
-    if (pixel) *pixel = i;
-    return em.envPixels[i] * em.scale;
-  }
-
-  float envPdf(const Entry& e, const Vec3& dirWorld) const {
-    size_t i;
-    envLookup(e, dirWorld, &i);
-    const Vec3 d = glm::normalize(e.toLocal * dirWorld);
-    const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - d.y * d.y));
-    if (!(sinTheta > 0.0f)) return 0.0f;
-    return static_cast<float>(e.pixelPdfUv[i] / (2.0 * kPiD * kPiD * sinTheta));
-  }
 };
 
 LightSampler::LightSampler(const Scene& scene) : impl_(std::make_unique<Impl>(scene)) {
@@ -171,33 +133,8 @@ LightSampler::LightSampler(const Scene& scene) : impl_(std::make_unique<Impl>(sc
         if (em.envWidth <= 0 || em.envHeight <= 0 ||
             em.envPixels.size() != static_cast<size_t>(em.envWidth) * em.envHeight)
           throw Error("envmap '" + em.filename + "': image not loaded");
-        e.toWorld = Mat3(em.toWorld);
-        e.toLocal = glm::inverse(e.toWorld);
-        // Pixel weights: luminance × sinθ at the row centre (solid angle of the pixel), so sampling
-        // follows the radiance actually seen per steradian.
-        const int W = em.envWidth, H = em.envHeight;
-        std::vector<double> rowWeights(H);
-        std::vector<double> pixelWeights(static_cast<size_t>(W) * H);
-        double total = 0.0, meanLum = 0.0, solid = 0.0;
-        for (int y = 0; y < H; ++y) {
-          const double sinTheta = std::sin((y + 0.5) * kPiD / H);
-          std::vector<double> row(W);
-          for (int x = 0; x < W; ++x) {
-            const double lum = std::max(0.0f, luminance(em.envPixels[static_cast<size_t>(y) * W + x] * em.scale));
-            row[x] = lum * sinTheta;
-            pixelWeights[static_cast<size_t>(y) * W + x] = row[x];
-            rowWeights[y] += row[x];
-            meanLum += lum * sinTheta;
-            solid += sinTheta;
-          }
-          total += rowWeights[y];
-          e.columns.emplace_back(row);
-        }
-        e.rows = Distribution1D(rowWeights);
-        e.pixelPdfUv.assign(pixelWeights.size(), 0.0);
-        if (total > 0.0)
-          for (size_t k = 0; k < pixelWeights.size(); ++k) e.pixelPdfUv[k] = pixelWeights[k] / total * W * H;
-        meanLum = solid > 0.0 ? meanLum / solid : 0.0;
+        e.envmap = std::make_shared<const EnvmapLight>(em.envWidth, em.envHeight, em.envPixels, em.scale, Mat3(em.toWorld));
+        const double meanLum = e.envmap->meanLuminance();
         im.infinite.push_back(addEntry(std::move(e), discArea * kPiD * meanLum));
         break;
       }
@@ -327,15 +264,10 @@ std::optional<LightSample> LightSampler::sample(const Vec3& p, Vec2 u, float uLi
       ls.radiance = environment(ls.wi) / ls.pdf;
       return ls.pdf > 0.0f ? std::optional<LightSample>(ls) : std::nullopt;
     case EmitterType::Envmap: {
-      float ux;
-      const size_t y = e.rows.sample(u.y, nullptr);
-      float vy;
-      e.rows.sample(u.y, &vy);
-      const size_t x = e.columns[y].sample(u.x, &ux);
-      const float uu = (static_cast<float>(x) + ux) / em.envWidth;
-      const float vv = (static_cast<float>(y) + vy) / em.envHeight;
-      ls.wi = glm::normalize(e.toWorld * envDirection(uu, vv));
-      ls.pdf = environmentPdf(ls.wi);
+      float pdfEnv;
+      ls.wi = e.envmap->sample(u, &pdfEnv);
+      if (!(pdfEnv > 0.0f)) return std::nullopt;
+      ls.pdf = environmentPdf(ls.wi);  // MIS-consistent: all infinite emitters' densities summed
       ls.radiance = environment(ls.wi) / ls.pdf;
       return ls.pdf > 0.0f && std::isfinite(ls.pdf) ? std::optional<LightSample>(ls) : std::nullopt;
     }
@@ -375,7 +307,7 @@ Color LightSampler::environment(const Vec3& dir) const {
   for (int k : im.infinite) {
     const Entry& e = im.entries[k];
     if (e.type == EmitterType::Constant) L += im.scene.emitters[e.emitter].radiance;
-    else L += im.envLookup(e, dir);
+    else L += e.envmap->eval(dir);
   }
   return L;
 }
@@ -385,7 +317,7 @@ float LightSampler::environmentPdf(const Vec3& dir) const {
   float pdf = 0.0f;
   for (int k : im.infinite) {
     const Entry& e = im.entries[k];
-    const float p = e.type == EmitterType::Constant ? 1.0f / (4.0f * kPi) : im.envPdf(e, dir);
+    const float p = e.type == EmitterType::Constant ? 1.0f / (4.0f * kPi) : e.envmap->pdf(dir);
     pdf += im.selectProb(k) * p;
   }
   return pdf;

@@ -185,6 +185,19 @@ if "$RC" "$TMP/inside.xml" --integrator rcache -D rays=64 -o "$TMP/inside.exr" -
    && "$RC" diff "$TMP/inside.exr" "$TMP/inside.exr" --json | grep -q '"non_finite": 0'; then pass camera_inside_geometry
 else fail camera_inside_geometry "exit $?"; fi
 
+# Every shipped scene renders with both integrators as shipped (tiny image, one sample), and the
+# image holds no NaN/Inf: the scenes in README and the bench are never broken by a change.
+SCENES_DIR=$(cd "$(dirname "$0")/../../scenes" && pwd)
+for scene in "$SCENES_DIR"/*.xml; do
+  name=$(basename "$scene" .xml)
+  for integ in path rcache; do
+    if "$RC" "$scene" --integrator $integ -D res=8 -D rays=16 --spp 1 -o "$TMP/shipped_$integ.exr" --quiet -t 2 \
+       && "$RC" diff "$TMP/shipped_$integ.exr" "$TMP/shipped_$integ.exr" --json | grep -q '"non_finite": 0'; then
+      pass "shipped_${name}_$integ"
+    else fail "shipped_${name}_$integ" "exit $?"; fi
+  done
+done
+
 # Ctrl-C during a long render: exit 130 and a valid (readable) partial image.
 "$RC" "$DATA/tiny.xml" --integrator path -D res=256 --spp 100000 -o "$TMP/int.exr" --quiet -t 2 &
 pid=$!

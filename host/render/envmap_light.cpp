@@ -1,0 +1,111 @@
+#include "render/envmap_light.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+
+namespace rc {
+
+Vec3 envDirection(float u, float v) {
+  const float theta = v * kPi, phi = u * 2.0f * kPi;
+  const float st = std::sin(theta);
+  return Vec3(st * std::sin(phi), std::cos(theta), -st * std::cos(phi));
+}
+
+Vec2 envUv(const Vec3& d) {
+  float u = std::atan2(d.x, -d.z) * (0.5f * kInvPi);
+  if (u < 0.0f) u += 1.0f;
+  if (u >= 1.0f) u = 0.0f;
+  const float v = std::acos(glm::clamp(d.y, -1.0f, 1.0f)) * kInvPi;
+  return Vec2(u, v);
+}
+
+EnvmapLight::EnvmapLight(int width, int height, const std::vector<Color>& pixels, float scale, const Mat3& toWorld)
+    : toWorld_(toWorld), toLocal_(glm::inverse(toWorld)) {
+  if (width <= 0 || height <= 0 || pixels.size() != static_cast<size_t>(width) * height)
+    throw Error("envmap: image not loaded");
+  // Pad like Mitsuba's Bitmap::pad_to(2, 3): replicate the last column, then the last row.
+  width_ = std::max(width, 2);
+  height_ = std::max(height, 3);
+  texels_.resize(static_cast<size_t>(width_) * height_);
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < width_; ++x)
+      texels_[static_cast<size_t>(y) * width_ + x] =
+          pixels[static_cast<size_t>(std::min(y, height - 1)) * width + std::min(x, width - 1)] * scale;
+
+  const int W = width_, bands = height_ - 1;
+  const double dTheta = kPiD / bands;
+  std::vector<double> rowWeights(bands, 0.0);
+  std::vector<double> cellWeights(static_cast<size_t>(W) * bands);
+  double total = 0.0, solid = 0.0;
+  for (int j = 0; j < bands; ++j) {
+    // Mean sinθ over the band: ∫ sinθ dθ / Δθ.
+    const double meanSin = (std::cos(j * dTheta) - std::cos((j + 1) * dTheta)) / dTheta;
+    std::vector<double> row(W);
+    for (int i = 0; i < W; ++i) {
+      const int i1 = (i + 1) % W;
+      // ∫ of a bilinear function over its cell = the mean of its four corners.
+      const double lum = 0.25 * (std::max(0.0f, luminance(texel(i, j))) + std::max(0.0f, luminance(texel(i1, j))) +
+                                 std::max(0.0f, luminance(texel(i, j + 1))) + std::max(0.0f, luminance(texel(i1, j + 1))));
+      row[i] = lum * meanSin;
+      cellWeights[static_cast<size_t>(j) * W + i] = row[i];
+      rowWeights[j] += row[i];
+    }
+    total += rowWeights[j];
+    solid += W * meanSin;
+    columns_.emplace_back(row);
+  }
+  rows_ = Distribution1D(rowWeights);
+  cellPdfUv_.assign(cellWeights.size(), 0.0);
+  if (total > 0.0)
+    for (size_t k = 0; k < cellWeights.size(); ++k) cellPdfUv_[k] = cellWeights[k] / total * W * bands;
+  meanLuminance_ = solid > 0.0 ? total / solid : 0.0;
+}
+
+Color EnvmapLight::eval(const Vec3& dirWorld) const {
+  const Vec2 uv = envUv(glm::normalize(toLocal_ * dirWorld));
+  const float fx = uv.x * width_ - 0.5f;  // texel x's centre at u = (x + 0.5) / W
+  const float fy = uv.y * (height_ - 1);  // texel y's centre at v = y / (H − 1)
+  const float x0f = std::floor(fx);
+  const float tx = fx - x0f;
+  int x0 = static_cast<int>(x0f) % width_;
+  if (x0 < 0) x0 += width_;
+  const int x1 = (x0 + 1) % width_;
+  const int y0 = std::min(height_ - 2, std::max(0, static_cast<int>(std::floor(fy))));
+  const float ty = glm::clamp(fy - y0, 0.0f, 1.0f);
+  const Color top = (1.0f - tx) * texel(x0, y0) + tx * texel(x1, y0);
+  const Color bottom = (1.0f - tx) * texel(x0, y0 + 1) + tx * texel(x1, y0 + 1);
+  return (1.0f - ty) * top + ty * bottom;
+}
+
+size_t EnvmapLight::cellOf(const Vec2& uv) const {
+  // Cell i spans the texel centres i and i + 1: u − 0.5/W ∈ [i/W, (i+1)/W), wrapped.
+  float s = uv.x - 0.5f / width_;
+  if (s < 0.0f) s += 1.0f;
+  const int i = std::min(width_ - 1, static_cast<int>(s * width_));
+  const int j = std::min(height_ - 2, static_cast<int>(uv.y * (height_ - 1)));
+  return static_cast<size_t>(j) * width_ + i;
+}
+
+float EnvmapLight::pdf(const Vec3& dirWorld) const {
+  const Vec3 d = glm::normalize(toLocal_ * dirWorld);
+  const float sinTheta = std::sqrt(std::max(0.0f, d.x * d.x + d.z * d.z));
+  if (!(sinTheta > 0.0f)) return 0.0f;
+  return static_cast<float>(cellPdfUv_[cellOf(envUv(d))] / (2.0 * kPiD * kPiD * sinTheta));
+}
+
+Vec3 EnvmapLight::sample(Vec2 u, float* pdfOut) const {
+  float vy, ux;
+  const size_t j = rows_.sample(u.y, &vy);
+  const size_t i = columns_[j].sample(u.x, &ux);
+  float uu = (static_cast<float>(i) + ux + 0.5f) / width_;
+  if (uu >= 1.0f) uu -= 1.0f;
+  const float vv = (static_cast<float>(j) + vy) / (height_ - 1);
+  const Vec3 dLocal = envDirection(uu, vv);
+  const Vec3 d = glm::normalize(toWorld_ * dLocal);
+  *pdfOut = pdf(d);
+  return d;
+}
+
+}  // namespace rc

@@ -1,0 +1,57 @@
+#pragma once
+// The lat-long environment emitter (`envmap`) with the semantics of Mitsuba 3's
+// src/emitters/envmap.cpp, which defines the format:
+//   direction d (emitter-local, +y up) ↔ (u, v) = (atan2(d.x, −d.z) / 2π, acos(d.y) / π);
+//   radiance = scale × bilinear interpolation of the texels, with texel centres
+//     u = (x + 0.5) / W (periodic in φ) and v = y / (H − 1) (the first and last rows lie on the
+//     poles, clamped in θ) — so a sharp change between two rows is a ramp over one row spacing;
+//   images smaller than 2×3 are padded by replicating the last column / row (Bitmap::pad_to).
+// Importance sampling is piecewise constant over the cells between texel centres (W cells in φ,
+// H − 1 in θ), each weighted by the exact integral of the bilinear luminance times the mean sinθ
+// of its band; pdf() evaluates that same density, so light sampling and MIS stay consistent.
+//
+// | parameter (XML) | meaning                                      | default  |
+// |-----------------|----------------------------------------------|----------|
+// | filename        | lat-long image (EXR, HDR, PNG, … via OIIO)   | required |
+// | scale           | radiance multiplier                          | 1        |
+// | to_world        | emitter frame (local +y is the image's top)  | identity |
+#include <vector>
+
+#include "core/math.h"
+#include "render/distribution.h"
+
+namespace rc {
+
+// Mitsuba's lat-long mapping of a local direction and its inverse (u, v ∈ [0, 1]).
+Vec3 envDirection(float u, float v);
+Vec2 envUv(const Vec3& dirLocal);
+
+class EnvmapLight {
+ public:
+  // pixels: width × height, row-major, top row (θ = 0) first, linear RGB.
+  EnvmapLight(int width, int height, const std::vector<Color>& pixels, float scale, const Mat3& toWorld);
+
+  // Radiance arriving along world direction dir.
+  Color eval(const Vec3& dirWorld) const;
+  // Solid-angle density with which sample() returns dir.
+  float pdf(const Vec3& dirWorld) const;
+  // A world direction drawn from the luminance-weighted density; *pdf gets its solid-angle density
+  // (0 when the map is black: then there is nothing to sample).
+  Vec3 sample(Vec2 u, float* pdf) const;
+  // Luminance averaged over the sphere of directions (for emitter selection by power).
+  double meanLuminance() const { return meanLuminance_; }
+
+ private:
+  int width_ = 0, height_ = 0;  // after padding
+  std::vector<Color> texels_;    // scaled radiance, row-major, top row first
+  Mat3 toWorld_{1.0f}, toLocal_{1.0f};
+  Distribution1D rows_;                 // marginal over the H − 1 bands between texel rows
+  std::vector<Distribution1D> columns_;  // conditional over the W cells of each band
+  std::vector<double> cellPdfUv_;       // density in (u, v) ∈ [0,1]² per cell
+  double meanLuminance_ = 0.0;
+
+  Color texel(int x, int y) const { return texels_[static_cast<size_t>(y) * width_ + x]; }
+  size_t cellOf(const Vec2& uv) const;
+};
+
+}  // namespace rc

@@ -1,0 +1,159 @@
+// The envmap emitter against Mitsuba 3's definition (src/emitters/envmap.cpp): direction ↔ (u, v)
+// = (atan2(x, −z)/2π, acos(y)/π); bilinear radiance with texel centres u = (x+0.5)/W (periodic)
+// and v = y/(H−1) (first/last row on the poles); pad to ≥ 2×3 by replication. The expected values
+// below are computed from that definition by hand, not from the implementation's output.
+#include <gtest/gtest.h>
+
+#include "core/rng.h"
+#include "render/envmap_light.h"
+
+namespace rc {
+namespace {
+
+// A W×H map whose texels all differ: red codes x, green codes y, blue a constant.
+std::vector<Color> codedTexels(int W, int H) {
+  std::vector<Color> px;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) px.push_back(Color(1.0f + x, 1.0f + 10.0f * y, 0.5f));
+  return px;
+}
+
+Vec3 dirAt(float u, float v) { return envDirection(u, v); }
+
+void expectColorNear(const Color& a, const Color& b, float tol) {
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(a[k], b[k], tol * std::max(1.0f, std::fabs(b[k]))) << "channel " << k;
+}
+
+TEST(EnvmapLight, MappingIsMitsubas) {
+  // Mitsuba: d = (sinθ sinφ, cosθ, −sinθ cosφ), θ = vπ, φ = 2πu.
+  expectColorNear(envDirection(0.0f, 0.5f), Color(0, 0, -1), 1e-6f);
+  expectColorNear(envDirection(0.25f, 0.5f), Color(1, 0, 0), 1e-6f);
+  expectColorNear(envDirection(0.3f, 0.0f), Color(0, 1, 0), 1e-6f);
+  const Vec2 uv = envUv(glm::normalize(Vec3(-1, 0, 0)));
+  EXPECT_NEAR(uv.x, 0.75f, 1e-6f);
+  EXPECT_NEAR(uv.y, 0.5f, 1e-6f);
+}
+
+TEST(EnvmapLight, TexelCentresReturnTheTexel) {
+  const int W = 8, H = 5;
+  const std::vector<Color> px = codedTexels(W, H);
+  const EnvmapLight env(W, H, px, 2.0f, Mat3(1.0f));
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      // Avoid the exact poles, where φ is undefined but every texel of the row is hit by some φ.
+      const float v = y == 0 ? 1e-5f : y == H - 1 ? 1.0f - 1e-5f : float(y) / (H - 1);
+      expectColorNear(env.eval(dirAt((x + 0.5f) / W, v)), 2.0f * px[y * W + x], 2e-3f);
+    }
+}
+
+TEST(EnvmapLight, BilinearBetweenTexelsAndAcrossTheSeam) {
+  const int W = 8, H = 5;
+  const std::vector<Color> px = codedTexels(W, H);
+  const EnvmapLight env(W, H, px, 1.0f, Mat3(1.0f));
+  auto at = [&](int x, int y) { return px[y * W + x]; };
+  // Halfway between rows 1 and 2 (v = 1.5/4) at column 3's centre: their mean.
+  expectColorNear(env.eval(dirAt(3.5f / W, 1.5f / (H - 1))), 0.5f * (at(3, 1) + at(3, 2)), 1e-4f);
+  // A quarter of the way from column 2 to column 3 on row 2.
+  expectColorNear(env.eval(dirAt(2.75f / W, 2.0f / (H - 1))), 0.75f * at(2, 2) + 0.25f * at(3, 2), 1e-4f);
+  // u = 0 lies halfway between the last and the first column (periodic in φ).
+  expectColorNear(env.eval(dirAt(0.0f, 2.0f / (H - 1))), 0.5f * (at(W - 1, 2) + at(0, 2)), 1e-4f);
+  // The horizon of an even-height map lies halfway between rows H/2 − 1 and H/2 (a sharp sky/ground
+  // change there is a ramp in Mitsuba, not a step at v = 0.5).
+  const int H2 = 4;
+  std::vector<Color> sky;
+  for (int y = 0; y < H2; ++y)
+    for (int x = 0; x < W; ++x) sky.push_back(y < H2 / 2 ? Color(4.0f) : Color(0.0f));
+  const EnvmapLight horizon(W, H2, sky, 1.0f, Mat3(1.0f));
+  expectColorNear(horizon.eval(Vec3(1, 0, 0)), Color(2.0f), 1e-4f);
+  // v = 0.4 → row coordinate 1.2: 80 % of row 1 (bright) and 20 % of row 2 (dark).
+  expectColorNear(horizon.eval(dirAt(0.1f, 0.4f)), Color(3.2f), 1e-3f);
+}
+
+TEST(EnvmapLight, ToWorldRotatesTheMap) {
+  const int W = 8, H = 5;
+  const std::vector<Color> px = codedTexels(W, H);
+  // Local +y (the image's top) → world +z.
+  const Mat3 toWorld(Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(0, -1, 0));
+  const EnvmapLight env(W, H, px, 1.0f, toWorld);
+  const Vec3 local = dirAt(5.5f / W, 1.0f / (H - 1));
+  expectColorNear(env.eval(toWorld * local), px[1 * W + 5], 1e-3f);
+  // World +z is the local pole: the top row (its green code), whatever φ picks along it.
+  EXPECT_NEAR(env.eval(Vec3(0, 0, 1)).g, px[0].g, 1e-3f);
+}
+
+TEST(EnvmapLight, SmallImagesArePaddedByReplication) {
+  const EnvmapLight one(1, 1, {Color(0.2f, 0.4f, 0.8f)}, 1.0f, Mat3(1.0f));
+  Rng rng(3);
+  for (int i = 0; i < 50; ++i) {
+    const Vec3 d = envDirection(rng.nextFloat(), rng.nextFloat());
+    expectColorNear(one.eval(d), Color(0.2f, 0.4f, 0.8f), 1e-5f);
+  }
+  // A constant map's density is uniform-ish: ∫pdf over the sphere is 1 (checked below in general).
+  EXPECT_GT(one.pdf(Vec3(1, 0, 0)), 0.0f);
+}
+
+// A sky with a sharp horizon and a bright sun texel.
+EnvmapLight sunSky() {
+  const int W = 32, H = 16;
+  std::vector<Color> px;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      px.push_back((x == 9 && y == 4) ? Color(400.0f, 300.0f, 200.0f) : y < H / 2 ? Color(0.3f, 0.5f, 1.0f) : Color(0.05f));
+  return EnvmapLight(W, H, px, 1.0f, Mat3(glm::mat3(Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(0, -1, 0))));
+}
+
+TEST(EnvmapLight, SampledPdfIsPdfAndIntegratesToOne) {
+  const EnvmapLight env = sunSky();
+  Rng rng(4);
+  for (int i = 0; i < 2000; ++i) {
+    float pdf;
+    const Vec3 d = env.sample(Vec2(rng.nextFloat(), rng.nextFloat()), &pdf);
+    ASSERT_GT(pdf, 0.0f);
+    EXPECT_NEAR(pdf, env.pdf(d), 1e-4f * pdf);
+  }
+  // ∫ pdf dω by stratified quadrature in (u, v): dω = 2π² sinθ du dv.
+  double integral = 0.0;
+  const int nu = 512, nv = 512;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const float u = (i + 0.5f) / nu, v = (j + 0.5f) / nv;
+      integral += env.pdf(envDirection(u, v)) * std::sin(v * kPi);
+    }
+  integral *= 2.0 * kPiD * kPiD / (double(nu) * nv);
+  EXPECT_NEAR(integral, 1.0, 2e-3);
+}
+
+// Light sampling alone is an unbiased estimator of ∫ L dω: E[L(ω)/pdf(ω)] equals the quadrature
+// of the bilinear radiance (so pdf > 0 wherever L > 0, and sample/pdf/eval agree).
+TEST(EnvmapLight, LightSamplingEstimatesTheIntegralOfTheRadiance) {
+  const EnvmapLight env = sunSky();
+  double quad[3] = {0, 0, 0};
+  const int nu = 1024, nv = 1024;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const float u = (i + 0.5f) / nu, v = (j + 0.5f) / nv;
+      const Color L = env.eval(glm::mat3(Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(0, -1, 0)) * envDirection(u, v));
+      for (int k = 0; k < 3; ++k) quad[k] += L[k] * std::sin(v * kPi);
+    }
+  for (double& q : quad) q *= 2.0 * kPiD * kPiD / (double(nu) * nv);
+  double mean[3] = {0, 0, 0}, m2[3] = {0, 0, 0};
+  const int n = 200000;
+  Rng rng(5);
+  for (int i = 0; i < n; ++i) {
+    float pdf;
+    const Vec3 d = env.sample(Vec2(rng.nextFloat(), rng.nextFloat()), &pdf);
+    const Color f = env.eval(d) / pdf;
+    for (int k = 0; k < 3; ++k) {
+      mean[k] += f[k];
+      m2[k] += double(f[k]) * f[k];
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    mean[k] /= n;
+    const double se = std::sqrt(std::max(0.0, m2[k] / n - mean[k] * mean[k]) / n);
+    EXPECT_NEAR(mean[k], quad[k], 5 * se + 2e-3 * quad[k]) << "channel " << k;
+  }
+}
+
+}  // namespace
+}  // namespace rc
