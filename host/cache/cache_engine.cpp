@@ -57,6 +57,19 @@ CacheEngine::CacheEngine(const RenderContext& ctx, const RcacheParams& params, c
       planOrder_[i] = params.tlMode ? 3 : plan->shOrder;
     }
   }
+  // Without a cached material no record exists to carry the environment; the TL approximation
+  // treats a record's light as one direction, which a sky is not.
+  bool anyCached = false;
+  for (Technique t : planTech_) anyCached |= isCached(t);
+  envSplit_ = std::make_unique<EnvironmentSplit>(ctx.scene, params.envCache && anyCached && !params.tlMode,
+                                                 params.envVariance);
+  if (envSplit_->active())
+    residualCtx_ = std::make_unique<RenderContext>(RenderContext{ctx.scene, ctx.accel, envSplit_->residualLights(),
+                                                                 ctx.options, ctx.backend, ctx.cancel, ctx.progress});
+}
+
+const RenderContext& CacheEngine::directLightContext(const ShadePoint& sp) const {
+  return residualCtx_ && hasIndirect(sp) && isCached(technique(sp)) ? *residualCtx_ : ctx_;
 }
 
 float CacheEngine::footprint(const Vec3& p) const {
@@ -113,9 +126,10 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
       const bool continues = continuesPath(sp);
       Rng rng = continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1);
       const Bsdf& bsdf = *ctx_.scene.bsdfs[sp.hit.bsdf];
-      const Color L = continues             ? lightStrategyMis(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng, sp.lightSamples)
-                      : bsdf.isDiffuseOnly() ? directLightLightOnly(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng)
-                                             : directLight(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng);
+      const RenderContext& lights = directLightContext(sp);
+      const Color L = continues             ? lightStrategyMis(lights, sp.hit, sp.frame, sp.wo, bsdf, rng, sp.lightSamples)
+                      : bsdf.isDiffuseOnly() ? directLightLightOnly(lights, sp.hit, sp.frame, sp.wo, bsdf, rng)
+                                             : directLight(lights, sp.hit, sp.frame, sp.wo, bsdf, rng);
       if (isFinite(L)) out[i] = L;
     }
   });
@@ -397,8 +411,12 @@ void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectB
   next.shrink_to_fit();
   pb.radiance.resize(total * 3);
   pb.distance.resize(total);
+  const bool carriesEnvironment = envSplit_->active();
   parallelFor(total, 16384, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
+      // An escaping ray brings the environment's cached part (its residual is the direct light
+      // of the points that use this record).
+      if (carriesEnvironment && !hits[i].valid()) L[i] += envSplit_->cached(rays[i].d);
       for (int c = 0; c < 3; ++c) pb.radiance[3 * i + c] = L[i][c];
       pb.distance[i] = hits[i].valid() ? hits[i].t : 0.0f;
     }

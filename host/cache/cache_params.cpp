@@ -40,7 +40,8 @@ bool toBool(const std::string& name, const std::string& v) {
 bool isIntegratorParamName(const std::string& name) {
   static const char* const kNames[] = {"max_depth", "rr_depth", "hide_emitters", "a", "rays", "order", "weber",
                                        "adaptive", "min_a_scale", "gradients", "rmin", "rmax", "secondary_a_scale",
-                                       "secondary_rays", "secondary_order", "cache_depth", "batch", "frame", "mode", "share_pixel", "light_samples"};
+                                       "secondary_rays", "secondary_order", "cache_depth", "batch", "frame", "mode", "share_pixel", "light_samples",
+                                       "env_cache", "env_variance"};
   for (const char* n : kNames)
     if (name == n) return true;
   return false;
@@ -67,6 +68,8 @@ RcacheParams parseRcacheParams(const std::map<std::string, std::string>& params)
     else if (name == "batch") p.batch = toInt(name, v, 1, 1 << 16);
     else if (name == "share_pixel") p.sharePixel = toBool(name, v);
     else if (name == "light_samples") p.lightSamples = toInt(name, v, 1, 64);
+    else if (name == "env_cache") p.envCache = toBool(name, v);
+    else if (name == "env_variance") p.envVariance = toFloat(name, v, 1e-6f, 1e6f);
     else if (name == "frame") {
       if (v == "auto") p.worldFrame = p.autoFrame = true;
       else if (v == "world") p.worldFrame = true, p.autoFrame = false;
@@ -78,7 +81,8 @@ RcacheParams parseRcacheParams(const std::map<std::string, std::string>& params)
       else throw bad(name, v, "must be radiance or tl");
     } else {
       throw Error("rcache parameter '" + name + "' is unknown (known: a, rays, order, weber, adaptive, min_a_scale, "
-                  "gradients, rmin, rmax, secondary_a_scale, secondary_rays, secondary_order, cache_depth, batch, frame, mode, share_pixel, light_samples)");
+                  "gradients, rmin, rmax, secondary_a_scale, secondary_rays, secondary_order, cache_depth, batch, frame, mode, share_pixel, light_samples, "
+                  "env_cache, env_variance)");
     }
   }
   if (p.rMinPx > p.rMaxPx) throw Error("rcache parameters: rmin must not exceed rmax");

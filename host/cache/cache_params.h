@@ -37,6 +37,12 @@
 //                       256² Cornell box, 16 spp, loaded cache: relMSE 0.00127 / 0.00102 / 0.00089
 //                       for 1 / 2 / 4 with 2.8 / 3.6 / 5.1 M rays — about what more spp would buy,
 //                       so 1 by default
+//   env_cache    true   records carry the smooth part of the environment light (constant, envmap)
+//                       and only its compact bright residual is light-sampled per pixel sample
+//                       (cache/environment_split.h); false: all of it light-sampled
+//   env_variance 0.333  κ of that split: the cached part's variance over any hemisphere stays
+//                       ≤ κ·(brightest hemisphere's mean)² (1/3: a diffuse record's own cosine
+//                       weight under a uniform sky)
 #include <map>
 #include <string>
 
@@ -61,6 +67,8 @@ struct RcacheParams {
   int batch = 256;
   bool sharePixel = true;
   int lightSamples = 1;
+  bool envCache = true;
+  float envVariance = 1.0f / 3.0f;
 };
 
 // Throws rc::Error("rcache parameter 'x': ...") for an unknown name or a malformed value.

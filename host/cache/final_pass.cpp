@@ -168,9 +168,10 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
           sp.lightSamples = params.lightSamples;
           bool lightOnly = false;
           // Importance-sampled points: the continuation's ray doubles as the BSDF sample.
+          const RenderContext& lights = run_.engine.directLightContext(sp);
           s.direct[i] = run_.engine.continuesPath(sp)
-                            ? lightStrategyMis(run_.ctx, sp.hit, sp.frame, sp.wo, bsdf, rng, params.lightSamples)
-                            : directLightCheapest(run_.ctx, sp.hit, sp.frame, sp.wo, bsdf, rng, params.lightSamples,
+                            ? lightStrategyMis(lights, sp.hit, sp.frame, sp.wo, bsdf, rng, params.lightSamples)
+                            : directLightCheapest(lights, sp.hit, sp.frame, sp.wo, bsdf, rng, params.lightSamples,
                                                   &lightOnly);
           if (lightOnly) ++lightOnlyCount;
         }

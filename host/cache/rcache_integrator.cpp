@@ -1,6 +1,7 @@
 #include "cache/rcache_integrator.h"
 
 #include <cmath>
+#include <cstring>
 
 #include "brdf/material_plan.h"
 #include "cache/adaptive_rounds.h"
@@ -13,6 +14,7 @@
 #include "cache/rcache_run.h"
 #include "cache/rcache_stats.h"
 #include "cl/sh_backend.h"
+#include "core/rng.h"
 #include "core/timing.h"
 #include "render/camera.h"
 #include "render/film.h"
@@ -91,7 +93,12 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   const int spp = ctx.options.spp > 0 ? ctx.options.spp : scene.sampleCount;
   const RcacheRun run{ctx, params_, tables, camera, engine, primaries, film.width(), film.height(),
                       spp, scene.samplerSeed + ctx.options.seed, usesLowDiscrepancy(ctx)};
-  const uint64_t sceneHash = cacheSceneHash(scene, settings_.maxDepth, params_.tlMode);
+  // Records hold the cached part of the environment: a cache saved under another split must not load.
+  const EnvironmentSplitSummary& env = engine.environmentSplit().summary();
+  uint32_t thresholdBits = 0;
+  std::memcpy(&thresholdBits, &env.threshold, sizeof(thresholdBits));
+  const uint64_t sceneHash = hashMix(cacheSceneHash(scene, settings_.maxDepth, params_.tlMode),
+                                     env.active ? 1 + uint64_t(thresholdBits) : 0);
 
   const size_t recordsLoaded = ctx.options.cacheLoad.empty() ? 0
       : loadCachesInto(engine, ctx.options.cacheLoad, sceneHash, params_.worldFrame, backend);

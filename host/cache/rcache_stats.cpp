@@ -1,6 +1,7 @@
 #include "cache/rcache_stats.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "cl/sh_backend.h"
@@ -90,6 +91,16 @@ void reportModes(const RcacheRun& run, RenderStats& stats) {
   stats.set("lookups_lambertian", double(es.lambertianLookups.load()));
   stats.setText("mode", p.tlMode ? "tl (Tabellion-Lamorlette dominant direction)" : "radiance");
   stats.setJson("materials", run.tables.materialsJson());
+  // The environment split (cache/environment_split.h): τ and the power fractions on each side.
+  const EnvironmentSplitSummary& env = run.engine.environmentSplit().summary();
+  if (env.active) {
+    stats.setText("env_cache", std::isfinite(env.threshold) ? "split" : "whole environment cached");
+    if (std::isfinite(env.threshold)) stats.set("env_threshold", env.threshold);
+    stats.set("env_cached_fraction", env.cachedFraction);
+    stats.set("env_sampled_fraction", env.sampledFraction);
+  } else {
+    stats.setText("env_cache", "off (" + env.reason + ")");
+  }
 }
 
 // What the render did not do, and why.

@@ -26,6 +26,10 @@ struct LightSample {
 class LightSampler {
  public:
   explicit LightSampler(const Scene& scene);
+  // The scene's shapes with `emitters` (same count and order as scene.emitters, outliving the
+  // sampler) in place of its emitters: a sampler for a part of the scene's light (rcache's
+  // residual environment, cache/environment_split.h).
+  LightSampler(const Scene& scene, const std::vector<Emitter>& emitters);
   ~LightSampler();
   LightSampler(const LightSampler&) = delete;
   LightSampler& operator=(const LightSampler&) = delete;
