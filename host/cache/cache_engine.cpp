@@ -61,8 +61,9 @@ CacheEngine::CacheEngine(const RenderContext& ctx, const RcacheParams& params, c
   // treats a record's light as one direction, which a sky is not.
   bool anyCached = false;
   for (Technique t : planTech_) anyCached |= isCached(t);
-  envSplit_ = std::make_unique<EnvironmentSplit>(ctx.scene, params.envCache && anyCached && !params.tlMode,
-                                                 params.envVariance);
+  const bool split = anyCached && !params.tlMode;
+  envSplit_ = std::make_unique<LightSplit>(ctx.scene, split && params.envCache, params.envVariance,
+                                           split && params.areaCache);
   if (envSplit_->active())
     residualCtx_ = std::make_unique<RenderContext>(RenderContext{ctx.scene, ctx.accel, envSplit_->residualLights(),
                                                                  ctx.options, ctx.backend, ctx.cancel, ctx.progress});
@@ -414,9 +415,10 @@ void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectB
   const bool carriesEnvironment = envSplit_->active();
   parallelFor(total, 16384, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
-      // An escaping ray brings the environment's cached part (its residual is the direct light
-      // of the points that use this record).
-      if (carriesEnvironment && !hits[i].valid()) L[i] += envSplit_->cached(rays[i].d);
+      // An escaping ray brings the environment's cached part, a ray that hits a cached area
+      // emitter its emission (the rest is the direct light of the points that use this record).
+      if (carriesEnvironment)
+        L[i] += hits[i].valid() ? envSplit_->cachedEmission(hits[i], rays[i].d) : envSplit_->cached(rays[i].d);
       for (int c = 0; c < 3; ++c) pb.radiance[3 * i + c] = L[i][c];
       pb.distance[i] = hits[i].valid() ? hits[i].t : 0.0f;
     }

@@ -11,7 +11,7 @@
 // without their own emission (that light is direct light, computed exactly), i.e. the
 // radianceOut of depth d+1 points, so the sum equals the path tracer's estimate of the same
 // integral (same max_depth).
-// Environment light (cache/environment_split.h): a record ray that escapes carries the cached
+// Environment light (cache/light_split.h): a record ray that escapes carries the cached
 // part of the environment, so points whose indirect light comes from records take their direct
 // light from directLightContext() — the scene's lights with only the environment's residual.
 // Caches are keyed by (level, order) — and by depth when max_depth is finite, because then
@@ -28,7 +28,7 @@
 
 #include "brdf/material_plan.h"
 #include "cache/cache_params.h"
-#include "cache/environment_split.h"
+#include "cache/light_split.h"
 #include "cache/radiance_cache.h"
 #include "cache/shade_point.h"
 #include "render/camera.h"
@@ -94,7 +94,7 @@ class CacheEngine {
   // The lights sp's direct light samples: the residual ones where its indirect light comes from
   // records that carry the cached environment, else the scene's.
   const RenderContext& directLightContext(const ShadePoint& sp) const;
-  const EnvironmentSplit& environmentSplit() const { return *envSplit_; }
+  const LightSplit& lightSplit() const { return *envSplit_; }
   int maxDepth() const { return maxDepth_; }
 
   std::map<CacheKey, std::unique_ptr<RadianceCache>>& caches() { return caches_; }
@@ -117,7 +117,7 @@ class CacheEngine {
   std::vector<int> planOrder_;  // per bsdf: record order
   std::vector<bool> twoSided_;
   std::map<CacheKey, std::unique_ptr<RadianceCache>> caches_;
-  std::unique_ptr<EnvironmentSplit> envSplit_;
+  std::unique_ptr<LightSplit> envSplit_;
   std::unique_ptr<RenderContext> residualCtx_;  // ctx_ with envSplit_'s residual lights
   EngineStats stats_;
   std::vector<int> recordPixels_;

@@ -41,7 +41,7 @@ bool isIntegratorParamName(const std::string& name) {
   static const char* const kNames[] = {"max_depth", "rr_depth", "hide_emitters", "a", "rays", "order", "weber",
                                        "adaptive", "min_a_scale", "gradients", "rmin", "rmax", "secondary_a_scale",
                                        "secondary_rays", "secondary_order", "cache_depth", "batch", "frame", "mode", "share_pixel", "light_samples",
-                                       "env_cache", "env_variance"};
+                                       "env_cache", "env_variance", "area_cache"};
   for (const char* n : kNames)
     if (name == n) return true;
   return false;
@@ -70,6 +70,7 @@ RcacheParams parseRcacheParams(const std::map<std::string, std::string>& params)
     else if (name == "light_samples") p.lightSamples = toInt(name, v, 1, 64);
     else if (name == "env_cache") p.envCache = toBool(name, v);
     else if (name == "env_variance") p.envVariance = toFloat(name, v, 1e-6f, 1e6f);
+    else if (name == "area_cache") p.areaCache = toBool(name, v);
     else if (name == "frame") {
       if (v == "auto") p.worldFrame = p.autoFrame = true;
       else if (v == "world") p.worldFrame = true, p.autoFrame = false;
@@ -82,7 +83,7 @@ RcacheParams parseRcacheParams(const std::map<std::string, std::string>& params)
     } else {
       throw Error("rcache parameter '" + name + "' is unknown (known: a, rays, order, weber, adaptive, min_a_scale, "
                   "gradients, rmin, rmax, secondary_a_scale, secondary_rays, secondary_order, cache_depth, batch, frame, mode, share_pixel, light_samples, "
-                  "env_cache, env_variance)");
+                  "env_cache, env_variance, area_cache)");
     }
   }
   if (p.rMinPx > p.rMaxPx) throw Error("rcache parameters: rmin must not exceed rmax");

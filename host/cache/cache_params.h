@@ -39,10 +39,13 @@
 //                       so 1 by default
 //   env_cache    true   records carry the smooth part of the environment light (constant, envmap)
 //                       and only its compact bright residual is light-sampled per pixel sample
-//                       (cache/environment_split.h); false: all of it light-sampled
+//                       (cache/light_split.h); false: all of it light-sampled
 //   env_variance 0.333  κ of that split: the cached part's variance over any hemisphere stays
 //                       ≤ κ·(brightest hemisphere's mean)² (1/3: a diffuse record's own cosine
 //                       weight under a uniform sky)
+//   area_cache   false  records also carry the emission of the area lights their rays hit, and
+//                       cached points no longer light-sample those (off: measured not to pay,
+//                       bench/RESULTS.md "Environment light in the cache")
 #include <map>
 #include <string>
 
@@ -69,6 +72,7 @@ struct RcacheParams {
   int lightSamples = 1;
   bool envCache = true;
   float envVariance = 1.0f / 3.0f;
+  bool areaCache = false;
 };
 
 // Throws rc::Error("rcache parameter 'x': ...") for an unknown name or a malformed value.

@@ -93,12 +93,13 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   const int spp = ctx.options.spp > 0 ? ctx.options.spp : scene.sampleCount;
   const RcacheRun run{ctx, params_, tables, camera, engine, primaries, film.width(), film.height(),
                       spp, scene.samplerSeed + ctx.options.seed, usesLowDiscrepancy(ctx)};
-  // Records hold the cached part of the environment: a cache saved under another split must not load.
-  const EnvironmentSplitSummary& env = engine.environmentSplit().summary();
+  // Records hold the cached part of the scene's light: a cache saved under another split must not load.
+  const LightSplitSummary& split = engine.lightSplit().summary();
   uint32_t thresholdBits = 0;
-  std::memcpy(&thresholdBits, &env.threshold, sizeof(thresholdBits));
-  const uint64_t sceneHash = hashMix(cacheSceneHash(scene, settings_.maxDepth, params_.tlMode),
-                                     env.active ? 1 + uint64_t(thresholdBits) : 0);
+  std::memcpy(&thresholdBits, &split.threshold, sizeof(thresholdBits));
+  const uint64_t splitKey = split.active ? (uint64_t(thresholdBits) << 2 | uint64_t(split.environmentCached) << 1 |
+                                            uint64_t(split.areaCached)) + 1 : 0;
+  const uint64_t sceneHash = hashMix(cacheSceneHash(scene, settings_.maxDepth, params_.tlMode), splitKey);
 
   const size_t recordsLoaded = ctx.options.cacheLoad.empty() ? 0
       : loadCachesInto(engine, ctx.options.cacheLoad, sceneHash, params_.worldFrame, backend);

@@ -168,6 +168,7 @@ float LightSampler::solidAngleBound(const Vec3& p) const {
   return total;
 }
 
+const std::vector<Emitter>& LightSampler::emitters() const { return impl_->emitters; }
 bool LightSampler::empty() const { return impl_->entries.empty(); }
 size_t LightSampler::emitterCount() const { return impl_->entries.size(); }
 bool LightSampler::hasEnvironment() const { return !impl_->infinite.empty(); }

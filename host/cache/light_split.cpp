@@ -1,7 +1,9 @@
-#include "cache/environment_split.h"
+#include "cache/light_split.h"
 
 #include <algorithm>
 #include <cmath>
+
+#include "render/direct_light.h"
 
 namespace rc {
 
@@ -83,19 +85,25 @@ float environmentSplitThreshold(int W, int H, const std::vector<Color>& texels, 
   return static_cast<float>(std::exp(a));
 }
 
-EnvironmentSplit::EnvironmentSplit(const Scene& scene, bool enabled, float maxRelativeVariance) {
-  bool hasEnvironment = false;
-  for (const Emitter& e : scene.emitters)
+LightSplit::LightSplit(const Scene& scene, bool environment, float maxRelativeVariance, bool areaEmitters)
+    : scene_(&scene) {
+  bool hasEnvironment = false, hasArea = false;
+  for (const Emitter& e : scene.emitters) {
     hasEnvironment |= e.type == EmitterType::Constant || e.type == EmitterType::Envmap;
-  if (!enabled || !hasEnvironment) {
-    summary_.reason = !enabled ? "disabled" : "no environment emitter";
-    return;
+    hasArea |= e.type == EmitterType::Area;
   }
+  environment &= hasEnvironment;
+  summary_.environmentCached = environment;
+  summary_.areaCached = areaEmitters && hasArea;
+  if (!environment) summary_.reason = !hasEnvironment ? "no environment emitter" : "disabled";
+  if (!environment && !summary_.areaCached) return;
   residualEmitters_ = scene.emitters;
   double cachedPower = 0.0, totalPower = 0.0;
   summary_.threshold = INFINITY;
   bool anyThreshold = false;
   for (Emitter& e : residualEmitters_) {
+    if (e.type == EmitterType::Area && summary_.areaCached) e.radiance = Color(0.0f);
+    if (!environment) continue;
     if (e.type == EmitterType::Constant) {
       // A constant is as smooth as light gets: records carry all of it.
       const double p = 4.0 * kPiD * luminance(e.radiance);
@@ -135,11 +143,15 @@ EnvironmentSplit::EnvironmentSplit(const Scene& scene, bool enabled, float maxRe
   }
   residualLights_ = std::make_unique<LightSampler>(scene, residualEmitters_);
   summary_.active = true;
-  summary_.cachedFraction = totalPower > 0.0 ? cachedPower / totalPower : 1.0;
+  summary_.cachedFraction = totalPower > 0.0 ? cachedPower / totalPower : environment ? 1.0 : 0.0;
   summary_.sampledFraction = 1.0 - summary_.cachedFraction;
 }
 
-Color EnvironmentSplit::cached(const Vec3& dirWorld) const {
+Color LightSplit::cachedEmission(const Hit& hit, const Vec3& dirWorld) const {
+  return summary_.areaCached ? emitted(*scene_, hit, -dirWorld) : Color(0.0f);
+}
+
+Color LightSplit::cached(const Vec3& dirWorld) const {
   Color L = cachedConstant_;
   for (const EnvmapLight& e : cachedEnvmaps_) L += e.eval(dirWorld);
   return L;

@@ -1,17 +1,22 @@
 #pragma once
-// The scene's environment light (constant and envmap emitters) split in two, so that radiance
-// records carry the part spherical harmonics hold and only the rest is light-sampled per pixel
-// sample:
+// The scene's light split in two, so that radiance records carry the part spherical harmonics
+// hold and only the rest is light-sampled per pixel sample.
+//
+// Environment (constant and envmap emitters):
 //   L_env(ω) = L_cached(ω) + L_residual(ω),
 //   L_cached = each texel t scaled down to luminance ≤ τ (t·min(1, τ/lum t)), constants whole;
 //   L_residual = the rest (a sun, a small bright window: compact and bright, which light
 //               sampling handles almost perfectly and SH of any practical order does not).
 // Both parts are bilinear interpolations of their texels like the envmap itself, so they add up to
 // L_env exactly in every direction. A record ray that escapes carries L_cached (visibility comes
-// from the record's own rays); a point whose indirect light comes from records light-samples
-// area, point and directional lights as before plus L_residual alone (residualLights()), with
-// the same MIS; every other point (importance-sampled, no indirect light) sees the whole L_env.
-// The sum is the path tracer's estimator of the same integral, term by term.
+// from the record's own rays).
+// Area emitters (only with area_cache=true): a record ray that hits one carries its emission,
+// and the emitter leaves the residual lights.
+// A point whose indirect light comes from records light-samples the residual lights alone
+// (residualLights(): area, point and directional lights as before, minus cached area emitters,
+// plus L_residual), with the same MIS; every other point (importance-sampled, no indirect light)
+// sees all of the scene's light. The sum is the path tracer's estimator of the same integral,
+// term by term.
 //
 // Choice of τ (per envmap, from its histogram over solid angle): a record estimates its incoming
 // radiance from M×N uniform hemisphere rays (course notes, "Incoming Radiance Computation"), so
@@ -33,33 +38,40 @@
 
 namespace rc {
 
-struct EnvironmentSplitSummary {
-  bool active = false;         // records carry part of the environment
+struct LightSplitSummary {
+  bool active = false;         // records carry part of the scene's light
+  bool environmentCached = false;  // ... part of the environment
+  bool areaCached = false;     // ... the area emitters' emission
   std::string reason;          // why not, when inactive
   float threshold = 0.0f;      // τ (luminance) of the brightest envmap; +inf when cached whole
   double cachedFraction = 0.0; // of the environment's power (luminance over the sphere)
   double sampledFraction = 1.0;
 };
 
-class EnvironmentSplit {
+class LightSplit {
  public:
-  // Inactive (everything light-sampled as before) unless `enabled` and the scene has an
-  // environment; κ = maxRelativeVariance.
-  EnvironmentSplit(const Scene& scene, bool enabled, float maxRelativeVariance);
-  EnvironmentSplit(const EnvironmentSplit&) = delete;
-  EnvironmentSplit& operator=(const EnvironmentSplit&) = delete;
+  // Environment part when `environment` and the scene has one (κ = maxRelativeVariance); area
+  // emitters when `areaEmitters` and the scene has some. Inactive (everything light-sampled as
+  // before) when neither applies.
+  LightSplit(const Scene& scene, bool environment, float maxRelativeVariance, bool areaEmitters = false);
+  LightSplit(const LightSplit&) = delete;
+  LightSplit& operator=(const LightSplit&) = delete;
 
   bool active() const { return summary_.active; }
-  const EnvironmentSplitSummary& summary() const { return summary_; }
+  const LightSplitSummary& summary() const { return summary_; }
   // L_cached along a world direction: what an escaping record ray carries.
   Color cached(const Vec3& dirWorld) const;
+  // What a record ray that found `hit` along dirWorld carries of the emitter there (0 unless
+  // area emitters are cached).
+  Color cachedEmission(const Hit& hit, const Vec3& dirWorld) const;
   // Lights for points whose indirect light comes from records (valid only when active()).
   const LightSampler& residualLights() const { return *residualLights_; }
 
  private:
-  EnvironmentSplitSummary summary_;
+  LightSplitSummary summary_;
   Color cachedConstant_{0.0f};
   std::vector<EnvmapLight> cachedEnvmaps_;
+  const Scene* scene_ = nullptr;
   std::vector<Emitter> residualEmitters_;  // the scene's emitters, environment parts replaced
   std::unique_ptr<LightSampler> residualLights_;
 };
