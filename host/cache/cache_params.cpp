@@ -41,7 +41,7 @@ bool isIntegratorParamName(const std::string& name) {
   static const char* const kNames[] = {"max_depth", "rr_depth", "hide_emitters", "a", "rays", "order", "weber",
                                        "adaptive", "min_a_scale", "gradients", "rmin", "rmax", "secondary_a_scale",
                                        "secondary_rays", "secondary_order", "cache_depth", "batch", "frame", "mode", "share_pixel", "light_samples",
-                                       "env_cache", "env_variance", "area_cache"};
+                                       "env_cache", "env_variance", "area_cache", "fallback", "fallback_share"};
   for (const char* n : kNames)
     if (name == n) return true;
   return false;
@@ -71,6 +71,8 @@ RcacheParams parseRcacheParams(const std::map<std::string, std::string>& params)
     else if (name == "env_cache") p.envCache = toBool(name, v);
     else if (name == "env_variance") p.envVariance = toFloat(name, v, 1e-6f, 1e6f);
     else if (name == "area_cache") p.areaCache = toBool(name, v);
+    else if (name == "fallback") p.fallback = toBool(name, v);
+    else if (name == "fallback_share") p.fallbackShare = toFloat(name, v, 0.0f, 1.0f);
     else if (name == "frame") {
       if (v == "auto") p.worldFrame = p.autoFrame = true;
       else if (v == "world") p.worldFrame = true, p.autoFrame = false;
@@ -83,7 +85,7 @@ RcacheParams parseRcacheParams(const std::map<std::string, std::string>& params)
     } else {
       throw Error("rcache parameter '" + name + "' is unknown (known: a, rays, order, weber, adaptive, min_a_scale, "
                   "gradients, rmin, rmax, secondary_a_scale, secondary_rays, secondary_order, cache_depth, batch, frame, mode, share_pixel, light_samples, "
-                  "env_cache, env_variance, area_cache)");
+                  "env_cache, env_variance, area_cache, fallback, fallback_share)");
     }
   }
   if (p.rMinPx > p.rMaxPx) throw Error("rcache parameters: rmin must not exceed rmax");

@@ -46,6 +46,9 @@
 //   area_cache   false  records also carry the emission of the area lights their rays hit, and
 //                       cached points no longer light-sample those (off: measured not to pay,
 //                       bench/RESULTS.md "Environment light in the cache")
+//   fallback     true   a pilot decides before the fill whether the cache can pay; if it would
+//                       serve less than fallback_share of the image, the image is path traced
+//   fallback_share 0.25 that threshold (cache/path_fallback.h says why 0.25)
 #include <map>
 #include <string>
 
@@ -73,6 +76,8 @@ struct RcacheParams {
   bool envCache = true;
   float envVariance = 1.0f / 3.0f;
   bool areaCache = false;
+  bool fallback = true;
+  float fallbackShare = 0.25f;
 };
 
 // Throws rc::Error("rcache parameter 'x': ...") for an unknown name or a malformed value.

@@ -10,6 +10,7 @@
 #include "cache/cache_fill.h"
 #include "cache/cache_params.h"
 #include "cache/final_pass.h"
+#include "cache/path_fallback.h"
 #include "cache/primary_hits.h"
 #include "cache/rcache_run.h"
 #include "cache/rcache_stats.h"
@@ -18,6 +19,7 @@
 #include "core/timing.h"
 #include "render/camera.h"
 #include "render/film.h"
+#include "render/path_integrator.h"
 #include "render/render_loop.h"
 
 namespace rc {
@@ -101,6 +103,15 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
                                             uint64_t(split.areaCached)) + 1 : 0;
   const uint64_t sceneHash = hashMix(cacheSceneHash(scene, settings_.maxDepth, params_.tlMode), splitKey);
 
+  // Phase 0: a pilot decides whether the cache can pay here at all (cache/path_fallback.h).
+  const FallbackDecision fallback = decideFallback(run);
+  if (fallback.pathTrace) {
+    Image img = makePathIntegrator(settings_)->render(ctx, stats);
+    stats.setText("fallback", fallback.reason);
+    stats.set("pilot_served_share", fallback.servedShare);
+    return img;
+  }
+
   const size_t recordsLoaded = ctx.options.cacheLoad.empty() ? 0
       : loadCachesInto(engine, ctx.options.cacheLoad, sceneHash, params_.worldFrame, backend);
   const FillReport fill = ctx.options.cacheLoad.empty() ? fillCache(run) : FillReport{};
@@ -121,6 +132,8 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
 
   reportRcacheStats(run, {secondsSince(start), tablesS, finalS, fill, pass, adaptive, recordsLoaded, interrupted},
                     stats);
+  stats.setText("fallback", fallback.reason);
+  if (fallback.pilotPoints > 0) stats.set("pilot_served_share", fallback.servedShare);
   return img;
 }
 

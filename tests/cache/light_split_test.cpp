@@ -201,5 +201,26 @@ TEST(LightSplit, CachedLargeAreaLightAgreesWithPathTracerPerBlock) {
   EXPECT_LT(worst, 1.0);
 }
 
+// The pilot (cache/path_fallback.h): a scene of sharp materials only gives the cache nothing to
+// serve, so rcache hands the image to the path tracer — the very image `path` renders, bit for
+// bit — and says so; with fallback=false it caches anyway; the sky scene's cached materials keep
+// the cache.
+TEST(PathFallback, SharpSceneIsPathTracedAndSaysSo) {
+  Scene s = skyScene(32);
+  for (auto& b : s.bsdfs) b = test::glossy(0.02f);
+  const auto path = test::renderScene(s, test::pathSettings(s), 4, 5);
+  const auto auto_ = test::renderScene(s, test::rcacheSettings(s), 4, 5);
+  EXPECT_EQ(statText(auto_.stats, "fallback").rfind("path traced", 0), 0u) << statText(auto_.stats, "fallback");
+  EXPECT_LT(auto_.stats.get("pilot_served_share", 1.0), 0.25);
+  ASSERT_EQ(auto_.image.pixels.size(), path.image.pixels.size());
+  for (size_t i = 0; i < path.image.pixels.size(); ++i) ASSERT_EQ(auto_.image.pixels[i], path.image.pixels[i]) << i;
+  const auto forced = test::renderScene(s, test::rcacheSettings(s, {{"fallback", "false"}}), 4, 5);
+  EXPECT_EQ(statText(forced.stats, "fallback"), "not considered");
+  const Scene sky = skyScene(32);
+  const auto cached = test::renderScene(sky, test::rcacheSettings(sky), 2, 5);
+  EXPECT_EQ(statText(cached.stats, "fallback").rfind("cached", 0), 0u) << statText(cached.stats, "fallback");
+  EXPECT_GT(cached.stats.get("records"), 0.0);
+}
+
 }  // namespace
 }  // namespace rc
