@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -11,10 +12,9 @@
 
 #include "app/cli_args.h"
 #include "app/diff_command.h"
+#include "app/integrator_registry.h"
 #include "app/progress_bar.h"
 #include "app/stats_report.h"
-#include "cache/cache_params.h"
-#include "cache/rcache_integrator.h"
 #include "cl/sh_backend.h"
 #include "cl/verify.h"
 #include "core/atomic_file.h"
@@ -25,7 +25,7 @@
 #include "image/oiio_module.h"
 #include "render/image_io.h"
 #include "render/light_sampler.h"
-#include "render/path_integrator.h"
+#include "scene/param_reader.h"
 #include "scene/scene_loader.h"
 
 namespace rc {
@@ -68,6 +68,16 @@ bool sceneHasCachedMaterial(const Scene& scene) {
   return false;
 }
 
+// --integrator NAME renders NAME whatever the file says; auto renders the file's integrator, except
+// that a path tracer (path, volpath, volpathmis, or no <integrator>) becomes rcache when the scene
+// has a material rcache caches: the same estimate, cached.
+std::string chooseIntegrator(const std::string& requested, const Scene& scene) {
+  if (requested != "auto") return requested;
+  const IntegratorEntry* file = findIntegrator(scene.integrator.type);
+  if (file && file->pathFamily && sceneHasCachedMaterial(scene)) return "rcache";
+  return scene.integrator.type;
+}
+
 int runRender(const std::vector<std::string>& args) {
   RenderArgs ra = parseRenderArgs(args);
   if (ra.threads > 0) setThreadCount(ra.threads);
@@ -88,10 +98,6 @@ int runRender(const std::vector<std::string>& args) {
   std::vector<std::string> warnings;
   Scene scene = loadScene(ra.scenePath, lo, &warnings);
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
-  // -D also reaches the integrator's own parameters (a, rays, order, ...), overriding the file;
-  // other names are scene parameters only.
-  for (const auto& kv : ra.defines)
-    if (isIntegratorParamName(kv.first)) scene.integrator.params[kv.first] = kv.second;
   const double loadS = secondsSince(tStart);
 
   const auto tBvh = Clock::now();
@@ -99,18 +105,24 @@ int runRender(const std::vector<std::string>& args) {
   LightSampler lights(scene);
   const double bvhS = secondsSince(tBvh);
 
-  std::string integratorName = ra.integrator;
-  if (integratorName == "auto") integratorName = sceneHasCachedMaterial(scene) ? "rcache" : "path";
-
+  IntegratorSettings settings = scene.integrator;
+  settings.type = chooseIntegrator(ra.integrator, scene);
+  // -D also reaches the integrator's own parameters (a, rays, max_depth, ...), overriding the
+  // file; other names are scene parameters only, as in Mitsuba.
+  const std::vector<std::string> paramNames = integratorParameterNames(settings.type);
+  for (const auto& kv : ra.defines)
+    if (std::find(paramNames.begin(), paramNames.end(), kv.first) != paramNames.end())
+      settings.props.set(kv.first, textProperty(kv.second));
+  const IntegratorEntry* entry = nullptr;
+  warnings.clear();
+  std::unique_ptr<Integrator> integrator =
+      makeIntegrator(settings, ra.lenient, settings.type == scene.integrator.type, &warnings, &entry);
+  for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
   std::unique_ptr<ShBackend> backend;
-  std::unique_ptr<Integrator> integrator;
-  if (integratorName == "rcache") {
+  if (entry->usesKernels) {
     std::string notice;
     backend = makeShBackend(ra.device, &notice);
     if (!notice.empty() && !ra.quiet) std::cerr << "notice: " << notice << "\n";
-    integrator = makeRcacheIntegrator(scene.integrator);
-  } else {
-    integrator = makePathIntegrator(scene.integrator);
   }
 
   ProgressBar bar(ra.quiet);
@@ -120,7 +132,6 @@ int runRender(const std::vector<std::string>& args) {
   opts.adaptive.threshold = ra.adaptiveThreshold;
   opts.adaptive.maxSpp = ra.maxSpp;
   opts.seed = ra.seed;
-  opts.quiet = ra.quiet;
   opts.aovs = ra.aovs;
   opts.cacheSave = ra.cacheSave;
   opts.cacheLoad = ra.cacheLoad;

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstdlib>
 
+#include "app/integrator_registry.h"
 #include "core/error.h"
 #include "scene/value_parsing.h"
 
@@ -10,7 +11,7 @@ namespace rc {
 
 const char* usageText() {
   return "usage:\n"
-         "  rcache SCENE.xml [-o out.exr|png|hdr] [-D name=value]... [--integrator auto|rcache|path]\n"
+         "  rcache SCENE.xml [-o out.exr|png|hdr] [-D name=value]... [--integrator auto|NAME]\n"
          "                   [--spp N] [--device cpu|opencl|opencl:P:D] [-t THREADS] [--seed S] [--quiet]\n"
          "                   [--sampler independent|ldsampler] [--adaptive T] [--max-spp N]\n"
          "                   [--stats out.json] [--aov records,radius,technique,contributors]\n"
@@ -90,8 +91,8 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
       r.defines[kv.substr(0, eq)] = kv.substr(eq + 1);
     } else if (a == "--integrator") {
       r.integrator = cur.value(a);
-      if (r.integrator != "auto" && r.integrator != "rcache" && r.integrator != "path")
-        throw Error("--integrator: expected auto, rcache or path, got '" + r.integrator + "'");
+      if (r.integrator != "auto" && !findIntegrator(r.integrator))
+        throw Error("--integrator: expected auto, " + integratorNames() + ", got '" + r.integrator + "'");
     } else if (a == "--spp") {
       r.spp = static_cast<int>(parseInteger(a, cur.value(a), 1, 1 << 20));
     } else if (a == "--device") {

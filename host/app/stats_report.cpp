@@ -1,39 +1,10 @@
 #include "app/stats_report.h"
 
-#include <cmath>
 #include <cstdio>
-#include <sstream>
+
+#include "core/json_writer.h"
 
 namespace rc {
-
-std::string jsonEscape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          out += buf;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out;
-}
-
-static std::string formatNumber(double v) {
-  if (!std::isfinite(v)) return "null";
-  char buf[64];
-  if (v == std::floor(v) && std::fabs(v) < 1e15) std::snprintf(buf, sizeof buf, "%.0f", v);
-  else std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
 
 void printStats(const RenderStats& stats, std::ostream& out) {
   out << "---- statistics ----\n";
@@ -43,7 +14,7 @@ void printStats(const RenderStats& stats, std::ostream& out) {
     out << line;
   }
   for (const auto& kv : stats.numbers) {
-    std::snprintf(line, sizeof line, "  %-28s %s\n", kv.first.c_str(), formatNumber(kv.second).c_str());
+    std::snprintf(line, sizeof line, "  %-28s %s\n", kv.first.c_str(), jsonNumber(kv.second).c_str());
     out << line;
   }
   for (const auto& kv : stats.json) out << "  " << kv.first << ": " << kv.second << "\n";
@@ -51,27 +22,13 @@ void printStats(const RenderStats& stats, std::ostream& out) {
 }
 
 std::string statsToJson(const RenderStats& stats) {
-  std::ostringstream s;
-  s << "{";
-  bool first = true;
-  auto sep = [&]() {
-    if (!first) s << ", ";
-    first = false;
-  };
-  for (const auto& kv : stats.numbers) {
-    sep();
-    s << "\"" << jsonEscape(kv.first) << "\": " << formatNumber(kv.second);
-  }
-  for (const auto& kv : stats.texts) {
-    sep();
-    s << "\"" << jsonEscape(kv.first) << "\": \"" << jsonEscape(kv.second) << "\"";
-  }
-  for (const auto& kv : stats.json) {
-    sep();
-    s << "\"" << jsonEscape(kv.first) << "\": " << kv.second;
-  }
-  s << "}\n";
-  return s.str();
+  JsonWriter w;
+  w.beginObject();
+  for (const auto& kv : stats.numbers) w.field(kv.first, kv.second);
+  for (const auto& kv : stats.texts) w.field(kv.first, kv.second);
+  for (const auto& kv : stats.json) w.key(kv.first).raw(kv.second);
+  w.endObject();
+  return w.str() + "\n";
 }
 
 }  // namespace rc

@@ -9,6 +9,5 @@ namespace rc {
 
 void printStats(const RenderStats& stats, std::ostream& out);
 std::string statsToJson(const RenderStats& stats);
-std::string jsonEscape(const std::string& text);
 
 }  // namespace rc

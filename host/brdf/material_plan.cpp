@@ -6,13 +6,13 @@
 #include <iostream>
 #include <map>
 #include <memory>
-#include <sstream>
 
 #include "brdf/order_selection.h"
 #include "brdf/table_builder.h"
 #include "brdf/table_cache.h"
 #include "brdf/table_layout.h"
 #include "core/error.h"
+#include "core/json_writer.h"
 
 namespace rc {
 
@@ -26,24 +26,6 @@ std::string hexFloat(double v) {
 
 std::string quadKey(const LobeQuadrature& q) {
   return "quad=" + std::to_string(q.bsdfSamples) + "/" + std::to_string(q.cosineSamples);
-}
-
-std::string jsonEscape(const std::string& s) {
-  std::string o;
-  for (char ch : s) {
-    const unsigned char c = static_cast<unsigned char>(ch);
-    if (c == '"' || c == '\\') {
-      o += '\\';
-      o += ch;
-    } else if (c < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      o += buf;
-    } else {
-      o += ch;
-    }
-  }
-  return o;
 }
 
 using Kind = BrdfTableSet::Kind;
@@ -239,18 +221,18 @@ const char* techniqueName(Technique t) {
 }
 
 std::string BrdfTableSet::materialsJson() const {
-  std::ostringstream o;
-  o << "[";
-  for (size_t i = 0; i < plans_.size(); ++i) {
-    const MaterialPlan& p = plans_[i];
-    char ms[32];
-    std::snprintf(ms, sizeof ms, "%.3f", p.tableMs);
-    o << (i ? ", " : "") << "{\"name\": \"" << jsonEscape(p.name) << "\", \"technique\": \"" << techniqueName(p.technique)
-      << "\", \"sh_order\": " << p.shOrder << ", \"table_ms\": " << ms
-      << ", \"table_cache_hit\": " << (p.tableCacheHit ? "true" : "false") << "}";
-  }
-  o << "]";
-  return o.str();
+  JsonWriter w;
+  w.beginArray();
+  for (const MaterialPlan& p : plans_)
+    w.beginObject()
+        .field("name", p.name)
+        .field("technique", techniqueName(p.technique))
+        .field("sh_order", p.shOrder)
+        .field("table_ms", p.tableMs)
+        .field("table_cache_hit", p.tableCacheHit)
+        .endObject();
+  w.endArray();
+  return w.str();
 }
 
 double BrdfTableSet::totalMs() const {

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/atomic_file.h"
+#include "core/binary_writer.h"
 #include "core/error.h"
 
 namespace rc {
@@ -19,10 +20,6 @@ namespace {
 
 constexpr char kMagic[8] = {'R', 'C', 'B', 'R', 'D', 'F', 'T', '1'};
 
-template <typename T>
-void put(std::string& s, const T& v) {
-  s.append(reinterpret_cast<const char*>(&v), sizeof(T));
-}
 
 // Sequential reader over a byte string; every read is bounds-checked.
 struct Reader {
@@ -121,7 +118,7 @@ void BrdfDiskCache::store(const std::string& key, const CachedBlob& blob) {
   put(s, blob.order);
   put(s, blob.res);
   put(s, static_cast<uint64_t>(blob.payload.size()));
-  s.append(reinterpret_cast<const char*>(blob.payload.data()), blob.payload.size() * sizeof(float));
+  putFloats(s, blob.payload);
   put(s, fnv1a64(s.data(), s.size()));
   try {
     writeFileAtomically(pathFor(key), s);

@@ -8,6 +8,7 @@
 #include "brdf/table_cache.h"
 #include "cache/world_frame.h"
 #include "core/atomic_file.h"
+#include "core/binary_writer.h"
 #include "core/error.h"
 
 namespace rc {
@@ -15,14 +16,6 @@ namespace rc {
 namespace {
 
 constexpr char kMagic[8] = {'R', 'C', 'C', 'A', 'C', 'H', 'E', '1'};
-
-template <typename T>
-void put(std::string& s, const T& v) {
-  s.append(reinterpret_cast<const char*>(&v), sizeof(T));
-}
-void putFloats(std::string& s, const std::vector<float>& v) {
-  s.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(float));
-}
 
 struct Reader {
   const std::string& data;

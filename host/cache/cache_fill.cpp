@@ -1,9 +1,9 @@
 #include "cache/cache_fill.h"
 
 #include <algorithm>
-#include <sstream>
 
 #include "cache/rng_salts.h"
+#include "core/json_writer.h"
 #include "core/parallel.h"
 #include "core/rng.h"
 #include "core/timing.h"
@@ -85,8 +85,8 @@ void fillPoints(const RcacheRun& run, const PassPoints& pass, size_t begin, size
 FillReport fillCache(const RcacheRun& run) {
   const auto start = SteadyClock::now();
   FillReport report;
-  std::ostringstream passes;
-  passes << "[";
+  JsonWriter passes;
+  passes.beginArray();
   std::vector<char> visited(static_cast<size_t>(run.width) * run.height, 0);
   for (int stride : kFillStrides) {
     if (report.interrupted) break;
@@ -108,11 +108,14 @@ FillReport fillCache(const RcacheRun& run) {
       if (run.ctx.progress)
         run.ctx.progress("cache fill (stride " + std::to_string(stride) + ")", double(end), double(pass.pos.size()));
     }
-    passes << (passes.tellp() > 1 ? "," : "") << "{\"stride\":" << stride << ",\"points\":" << pass.pos.size()
-           << ",\"records\":" << run.totalRecords() - recordsBefore << ",\"time_s\":" << secondsSince(passStart)
-           << "}";
+    passes.beginObject()
+        .field("stride", stride)
+        .field("points", pass.pos.size())
+        .field("records", run.totalRecords() - recordsBefore)
+        .field("time_s", secondsSince(passStart))
+        .endObject();
   }
-  passes << "]";
+  passes.endArray();
   report.passesJson = passes.str();
   report.seconds = secondsSince(start);
   return report;

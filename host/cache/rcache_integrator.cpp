@@ -62,9 +62,14 @@ void addRecordsAov(const CacheEngine& engine, Image& img) {
   img.aovs["records"] = layer;
 }
 
+RcacheParams paramsOf(const IntegratorSettings& s) {
+  ParamReader in(&s.props);
+  return readRcacheParams(in);
+}
+
 class RcacheIntegrator : public Integrator {
  public:
-  explicit RcacheIntegrator(const IntegratorSettings& s) : settings_(s), params_(parseRcacheParams(s.params)) {}
+  explicit RcacheIntegrator(const IntegratorSettings& s) : settings_(s), params_(paramsOf(s)) {}
   std::string name() const override { return "rcache"; }
   Image render(const RenderContext& ctx, RenderStats& stats) override;
 

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "cl/sh_backend.h"
+#include "core/json_writer.h"
 
 namespace rc {
 
@@ -29,18 +29,20 @@ void reportTimes(const RcacheRun& run, const RcacheReport& r, RenderStats& stats
 
 void reportRecords(const RcacheRun& run, const RcacheReport& r, RenderStats& stats) {
   size_t records = 0, glossyRecords = 0, level0 = 0;
-  std::ostringstream caches;
-  caches << "[";
-  bool first = true;
+  JsonWriter caches;
+  caches.beginArray();
   for (auto& [key, cache] : run.engine.caches()) {
     records += cache->size();
     if (key.order > 3) glossyRecords += cache->size();
     if (key.level == 0) level0 += cache->size();
-    caches << (first ? "" : ",") << "{\"level\":" << key.level << ",\"depth\":" << key.depth
-           << ",\"order\":" << key.order << ",\"records\":" << cache->size() << "}";
-    first = false;
+    caches.beginObject()
+        .field("level", key.level)
+        .field("depth", key.depth)
+        .field("order", key.order)
+        .field("records", cache->size())
+        .endObject();
   }
-  caches << "]";
+  caches.endArray();
   stats.set("records", double(records));
   stats.set("records_primary", double(level0));
   stats.set("records_loaded", double(r.recordsLoaded));

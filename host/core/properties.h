@@ -37,6 +37,9 @@ class Properties {
   Color getColor(const std::string& name, const Color& fallback) const;  // rgb, or float → grey
   Vec3 getVector(const std::string& name, const Vec3& fallback) const;   // point/vector
 
+  // The raw parameter (marked used), null when absent: for readers that convert types themselves.
+  const Property* property(const std::string& name) const { return find(name); }
+
   std::vector<std::string> unusedNames() const;  // set but never read
   int lineOf(const std::string& name) const;
 

@@ -1,32 +1,49 @@
-// <integrator type="path|rcache">: the shared path parameters typed, every parameter kept raw in
-// IntegratorSettings::params (the rcache integrator parses its own: a, rays, order, ...).
+// <integrator type="...">: the type, its parameters typed and use-tracked, and where they were
+// written. The scene builder knows no integrator names: the integrator registry
+// (app/integrator_registry.h) resolves the type, reads the parameters and reports unknown types and
+// unused parameters with the locations kept here. An integrator holding another integrator (a
+// wrapper such as Mitsuba's `aov` or `moment`) is read as the one it holds: rcache renders the
+// inner integrator's image, and the wrapper's own outputs are not produced.
+#include "core/error.h"
+#include "scene/integrator_params.h"
 #include "scene/loader.h"
+#include "scene/param_reader.h"
 
 namespace rc {
 
 void Loader::buildIntegrator(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
-  const Element e = parseElement(file, node);
-  for (const pugi::xml_node& child : e.children) unexpectedChild(e, child);
-  if (e.type.empty()) e.fail("missing attribute 'type'");
-  if (e.type != "path" && e.type != "rcache") {
-    unsupported(e.where() + ": unknown plugin '" + e.type + "'");
-    return;
-  }
-  if (integrators_++ > 0) e.fail("only one <integrator> is allowed");
+  if (integrators_++ > 0) parseElement(file, node).fail("only one <integrator> is allowed");
   IntegratorSettings& s = scene_.integrator;
-  s.type = e.type;
-  s.maxDepth = e.located([&] { return e.props.getInt("max_depth", -1); });
-  s.rrDepth = e.located([&] { return e.props.getInt("rr_depth", 5); });
-  s.hideEmitters = e.located([&] { return e.props.getBool("hide_emitters", false); });
-  if (s.maxDepth < -1) e.failParam("max_depth", "'max_depth' must be -1 (unbounded) or >= 0");
-  if (s.rrDepth <= 0) e.failParam("rr_depth", "'rr_depth' must be positive");
-  s.params = e.raw;
-  if (e.type == "path") {
-    checkUnused(e);
-  } else {
-    // rcache parameters beyond the three above are validated by the rcache integrator when it
-    // starts (it knows its own names); only transforms are certainly misplaced here.
+  pugi::xml_node current = node;
+  for (;;) {
+    const Element e = parseElement(file, current);
+    if (e.type.empty()) e.fail("missing attribute 'type'");
+    pugi::xml_node inner;
+    for (const pugi::xml_node& child : e.children) {
+      if (std::string(child.name()) != "integrator" || inner) unexpectedChild(e, child);
+      inner = child;
+    }
+    if (inner) {
+      s.wrappers.push_back(e.type);
+      current = inner;
+      continue;
+    }
     for (const auto& kv : e.transforms) unsupported(e.whereParam(kv.first) + ": unsupported parameter '" + kv.first + "'");
+    s.type = e.type;
+    s.props = e.props;
+    // Filled now for code that makes integrators without the registry (tests, benchmarks); read
+    // from a copy so that the registry still sees which parameters its integrator leaves unused.
+    const Properties unmarked = e.props;
+    ParamReader in(&unmarked);
+    try {
+      readPathParams(in, s);
+    } catch (const Error& err) {
+      e.failParam(in.names().back(), err.what());  // the last parameter read is the one that failed
+    }
+    s.where = e.where();
+    s.paramWhere.clear();
+    for (const auto& kv : e.raw) s.paramWhere[kv.first] = e.whereParam(kv.first);
+    return;
   }
 }
 

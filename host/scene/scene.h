@@ -8,6 +8,7 @@
 
 #include "bsdf/bsdf.h"
 #include "core/math.h"
+#include "core/properties.h"
 
 namespace rc {
 
@@ -69,10 +70,15 @@ struct FilmSettings {
 // substituted) so the rcache integrator can read its own (a, rays, order, ...).
 struct IntegratorSettings {
   std::string type = "path";
+  // The path-tracing parameters every integrator shares (Mitsuba's max_depth, rr_depth,
+  // hide_emitters), filled by readPathParams (scene/integrator_params.h) when the integrator is made.
   int maxDepth = -1;      // -1 = unbounded (Russian roulette ends paths)
   int rrDepth = 5;
   bool hideEmitters = false;
-  std::map<std::string, std::string> params;  // raw values of all parameters, by name
+  Properties props;       // every parameter as written (typed, use-tracked); -D overrides as text
+  std::string where;      // "file:L: <integrator ...>" for messages ("" when built in code)
+  std::map<std::string, std::string> paramWhere;  // parameter → its location, for messages
+  std::vector<std::string> wrappers;  // outer integrators holding this one (aov, moment), outermost first
 };
 
 struct Scene {

@@ -9,6 +9,7 @@
 #include "brdf/table_layout.h"
 #include "brute_force.h"
 #include "bsdf/bsdf_factory.h"
+#include "common/property_builders.h"
 #include "core/rng.h"
 #include "sh/reference.h"
 #include "sh/sh_basis.h"
@@ -17,18 +18,8 @@
 namespace rc {
 namespace {
 
-Property floatProp(double v) {
-  Property p;
-  p.type = Property::Type::Float;
-  p.number = v;
-  return p;
-}
-Property stringProp(const std::string& s) {
-  Property p;
-  p.type = Property::Type::String;
-  p.text = s;
-  return p;
-}
+using test::floatProp;
+using test::stringProp;
 
 BsdfPtr roughConductor(const std::string& distribution, double alpha) {
   Properties props;

@@ -147,9 +147,10 @@ TEST(RcacheIntegrator, AdaptiveCachingRefinesSharperFloorsMore) {
   EXPECT_GT(gs, 1.2 * gr);
 }
 
-TEST(RcacheIntegrator, RejectsUnknownParameter) {
+TEST(RcacheIntegrator, RejectsInvalidParameterValue) {
+  // Unknown names are the registry's to report (tests/app/integrator_registry_test.cpp).
   const Scene s = test::boxScene(0.0f);
-  EXPECT_THROW(makeRcacheIntegrator(test::rcacheSettings(s, {{"bogus", "1"}})), Error);
+  EXPECT_THROW(makeRcacheIntegrator(test::rcacheSettings(s, {{"rays", "many"}})), Error);
   EXPECT_THROW(makeRcacheIntegrator(test::rcacheSettings(s, {{"a", "-1"}})), Error);
 }
 

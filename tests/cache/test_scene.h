@@ -8,33 +8,16 @@
 #include "bsdf/bsdf_factory.h"
 #include "cache/rcache_integrator.h"
 #include "cl/sh_backend.h"
+#include "common/property_builders.h"
 #include "core/properties.h"
 #include "geometry/accel.h"
 #include "render/integrator.h"
 #include "render/light_sampler.h"
 #include "render/path_integrator.h"
+#include "scene/param_reader.h"
 #include "scene/scene.h"
 
 namespace rc::test {
-
-inline Property rgbProp(float r, float g, float b) {
-  Property p;
-  p.type = Property::Type::Rgb;
-  p.vec = Vec3(r, g, b);
-  return p;
-}
-inline Property floatProp(float v) {
-  Property p;
-  p.type = Property::Type::Float;
-  p.number = v;
-  return p;
-}
-inline Property stringProp(const std::string& s) {
-  Property p;
-  p.type = Property::Type::String;
-  p.text = s;
-  return p;
-}
 
 inline BsdfPtr diffuse(float r, float g, float b) {
   Properties props;
@@ -128,7 +111,7 @@ inline RenderResult renderScene(const Scene& scene, const IntegratorSettings& se
 inline IntegratorSettings rcacheSettings(const Scene& s, std::map<std::string, std::string> params = {}) {
   IntegratorSettings is = s.integrator;
   is.type = "rcache";
-  is.params = params;
+  for (const auto& [name, value] : params) is.props.set(name, textProperty(value));
   return is;
 }
 inline IntegratorSettings pathSettings(const Scene& s) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bsdf/bsdf_factory.h"
+#include "common/property_builders.h"
 #include "geometry/accel.h"
 #include "render/integrator.h"
 #include "render/light_sampler.h"
@@ -13,25 +14,6 @@
 #include "scene/scene.h"
 
 namespace rc::test {
-
-inline Property rgbProp(const Color& c) {
-  Property p;
-  p.type = Property::Type::Rgb;
-  p.vec = c;
-  return p;
-}
-inline Property floatProp(float v) {
-  Property p;
-  p.type = Property::Type::Float;
-  p.number = v;
-  return p;
-}
-inline Property stringProp(const std::string& s) {
-  Property p;
-  p.type = Property::Type::String;
-  p.text = s;
-  return p;
-}
 
 inline BsdfPtr diffuse(const Color& reflectance) {
   Properties props;

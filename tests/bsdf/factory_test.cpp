@@ -2,23 +2,14 @@
 #include <gtest/gtest.h>
 
 #include "bsdf/bsdf_factory.h"
+#include "common/property_builders.h"
 #include "core/error.h"
 
 namespace rc {
 namespace {
 
-Property num(double v) {
-  Property p;
-  p.type = Property::Type::Float;
-  p.number = v;
-  return p;
-}
-Property str(const std::string& s) {
-  Property p;
-  p.type = Property::Type::String;
-  p.text = s;
-  return p;
-}
+using test::floatProp;
+using test::stringProp;
 
 Properties props(const std::string& type) {
   Properties p;
@@ -57,29 +48,29 @@ TEST(BsdfFactory, DefaultsAndIds) {
 
 TEST(BsdfFactory, RejectsBadParameters) {
   Properties p = props("roughconductor");
-  p.set("alpha", num(0.0));
+  p.set("alpha", floatProp(0.0));
   expectError(p, {}, "'alpha'");
   p = props("roughconductor");
-  p.set("alpha", num(NAN));
+  p.set("alpha", floatProp(NAN));
   expectError(p, {}, "'alpha'");
   p = props("roughconductor");
-  p.set("alpha_u", num(0.1));
+  p.set("alpha_u", floatProp(0.1));
   expectError(p, {}, "alpha_v");
   p = props("diffuse");
-  p.set("reflectance", num(-0.1));
+  p.set("reflectance", floatProp(-0.1));
   expectError(p, {}, "'reflectance'");
   p = props("conductor");
-  p.set("eta", num(NAN));
+  p.set("eta", floatProp(NAN));
   expectError(p, {}, "'eta'");
   p = props("conductor");
-  p.set("material", str("Au"));
+  p.set("material", stringProp("Au"));
   expectError(p, {}, "unsupported material");
   p = props("roughconductor");
-  p.set("distribution", str("phong"));
+  p.set("distribution", stringProp("phong"));
   expectError(p, {}, "'distribution'");
   BsdfPtr d = createBsdf(props("diffuse"), {});
   p = props("blendbsdf");
-  p.set("weight", num(1.5));
+  p.set("weight", floatProp(1.5));
   expectError(p, {d, d}, "'weight'");
   expectError(props("blendbsdf"), {d}, "nested");
   expectError(props("twosided"), {}, "nested");
@@ -88,20 +79,20 @@ TEST(BsdfFactory, RejectsBadParameters) {
 
 TEST(BsdfFactory, ParameterKeyDistinguishesValues) {
   Properties a = props("roughconductor"), b = props("roughconductor");
-  a.set("alpha", num(0.3));
-  b.set("alpha", num(std::nextafter(0.3f, 1.0f)));
+  a.set("alpha", floatProp(0.3));
+  b.set("alpha", floatProp(std::nextafter(0.3f, 1.0f)));
   EXPECT_NE(createBsdf(a, {})->parameterKey(), createBsdf(b, {})->parameterKey());
   Properties a2 = props("roughconductor");
-  a2.set("alpha", num(0.3));
+  a2.set("alpha", floatProp(0.3));
   EXPECT_EQ(createBsdf(a, {})->parameterKey(), createBsdf(a2, {})->parameterKey());
   BsdfPtr d1 = createBsdf(props("diffuse"), {});
   Properties g = props("diffuse");
-  g.set("reflectance", num(0.25));
+  g.set("reflectance", floatProp(0.25));
   BsdfPtr d2 = createBsdf(g, {});
   // Nested keys are part of the wrapper's key.
   EXPECT_NE(createBsdf(props("twosided"), {d1})->parameterKey(), createBsdf(props("twosided"), {d2})->parameterKey());
   Properties unread = props("diffuse");
-  unread.set("bogus", num(1.0));
+  unread.set("bogus", floatProp(1.0));
   createBsdf(unread, {});
   ASSERT_EQ(unread.unusedNames().size(), 1u);  // the parser reports it
 }
@@ -109,24 +100,24 @@ TEST(BsdfFactory, ParameterKeyDistinguishesValues) {
 TEST(BsdfFactory, NamedIorsAsMitsuba) {
   // "bk7" (1.5046) in "water" (1.333) equals the numeric ratio; names are case-insensitive.
   Properties named = props("dielectric"), numeric = props("dielectric");
-  named.set("int_ior", str("BK7"));
-  named.set("ext_ior", str("water"));
-  numeric.set("int_ior", num(1.5046));
-  numeric.set("ext_ior", num(1.333));
+  named.set("int_ior", stringProp("BK7"));
+  named.set("ext_ior", stringProp("water"));
+  numeric.set("int_ior", floatProp(1.5046));
+  numeric.set("ext_ior", floatProp(1.333));
   EXPECT_EQ(createBsdf(named, {})->parameterKey(), createBsdf(numeric, {})->parameterKey());
   // Defaults: dielectric bk7/air, plastic polypropylene (1.49)/air.
   Properties dflt = props("dielectric"), explicitIor = props("dielectric");
-  explicitIor.set("int_ior", str("bk7"));
-  explicitIor.set("ext_ior", str("air"));
+  explicitIor.set("int_ior", stringProp("bk7"));
+  explicitIor.set("ext_ior", stringProp("air"));
   EXPECT_EQ(createBsdf(dflt, {})->parameterKey(), createBsdf(explicitIor, {})->parameterKey());
   Properties plasticDefault = props("plastic"), acrylic = props("plastic");
-  acrylic.set("int_ior", str("acrylic glass"));  // 1.49 too
+  acrylic.set("int_ior", stringProp("acrylic glass"));  // 1.49 too
   EXPECT_EQ(createBsdf(plasticDefault, {})->parameterKey(), createBsdf(acrylic, {})->parameterKey());
   Properties bad = props("plastic");
-  bad.set("int_ior", str("unobtainium"));
+  bad.set("int_ior", stringProp("unobtainium"));
   expectError(bad, {}, "unknown index-of-refraction name 'unobtainium'");
   bad = props("dielectric");
-  bad.set("ext_ior", num(-1.0));
+  bad.set("ext_ior", floatProp(-1.0));
   expectError(bad, {}, "'ext_ior'");
 }
 
@@ -135,20 +126,20 @@ TEST(BsdfFactory, LobesAlphaAndIsotropy) {
   EXPECT_EQ(createBsdf(props("dielectric"), {})->lobes(), uint32_t(kLobeDelta | kLobeTransmission));
   EXPECT_TRUE(std::isinf(createBsdf(props("conductor"), {})->glossyAlpha()));
   Properties aniso = props("roughconductor");
-  aniso.set("alpha_u", num(0.3));
-  aniso.set("alpha_v", num(0.2));
+  aniso.set("alpha_u", floatProp(0.3));
+  aniso.set("alpha_v", floatProp(0.2));
   BsdfPtr a = createBsdf(aniso, {});
   EXPECT_FALSE(a->isotropic());
   EXPECT_FLOAT_EQ(a->glossyAlpha(), 0.2f);
   BsdfPtr d = createBsdf(props("diffuse"), {});
   Properties blend = props("blendbsdf");
-  blend.set("weight", num(0.0));  // second BSDF has no weight: its lobe is absent
+  blend.set("weight", floatProp(0.0));  // second BSDF has no weight: its lobe is absent
   BsdfPtr b = createBsdf(blend, {d, a});
   EXPECT_TRUE(b->isDiffuseOnly());
   EXPECT_FALSE(createBsdf(props("twosided"), {d, a})->isotropic());
   // roughplastic is isotropic only, like Mitsuba: alpha_u stays unread and the parser reports it.
   Properties rp = props("roughplastic");
-  rp.set("alpha_u", num(0.3));
+  rp.set("alpha_u", floatProp(0.3));
   createBsdf(rp, {});
   EXPECT_EQ(rp.unusedNames(), std::vector<std::string>{"alpha_u"});
 }

@@ -1,9 +1,6 @@
-// Measurements for bench/RESULTS.md ("BRDF tables"). Disabled in the normal suite; run with
-//   build-brdf/test_brdf --gtest_also_run_disabled_tests --gtest_filter='BrdfBench.*'
+// Measurements for bench/RESULTS.md ("BRDF tables"): build/bench/rcache-bench-brdf-tables.
 // Prints markdown rows: precompute time per material at order 10, automatic orders per
 // roughness, and cache-hit load time.
-#include <gtest/gtest.h>
-
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -11,22 +8,14 @@
 #include "brdf/material_plan.h"
 #include "brdf/order_selection.h"
 #include "bsdf/bsdf_factory.h"
+#include "common/property_builders.h"
 #include "core/parallel.h"
 
 namespace rc {
 namespace {
 
-Property prop(double v) {
-  Property p;
-  p.number = v;
-  return p;
-}
-Property prop(const std::string& s) {
-  Property p;
-  p.type = Property::Type::String;
-  p.text = s;
-  return p;
-}
+Property prop(double v) { return test::floatProp(v); }
+Property prop(const std::string& s) { return test::stringProp(s); }
 
 BsdfPtr make(const std::string& type, const std::string& dist, double au, double av, const std::string& id) {
   Properties props;
@@ -41,7 +30,7 @@ BsdfPtr make(const std::string& type, const std::string& dist, double au, double
   return createBsdf(props, {}, id);
 }
 
-TEST(BrdfBench, DISABLED_PrecomputeOrdersAndCache) {
+void precomputeOrdersAndCache() {
   std::printf("threads: %d\n", threadCount());
   const std::string dir = "/tmp/rc_brdf_bench";
   std::filesystem::remove_all(dir);
@@ -87,3 +76,8 @@ TEST(BrdfBench, DISABLED_PrecomputeOrdersAndCache) {
 
 }  // namespace
 }  // namespace rc
+
+int main() {
+  rc::precomputeOrdersAndCache();
+  return 0;
+}

@@ -50,7 +50,7 @@ TEST(ClError, CarriesCallNameAndLocation) {
   const std::string m = messageOf([] { RC_CL_CHECK(clReleaseMemObject(nullptr)); });
   EXPECT_NE(m.find("clReleaseMemObject(nullptr)"), std::string::npos) << m;
   EXPECT_NE(m.find("CL_INVALID_MEM_OBJECT"), std::string::npos) << m;
-  EXPECT_NE(m.find("test_runtime.cpp:"), std::string::npos) << m;
+  EXPECT_NE(m.find("runtime_test.cpp:"), std::string::npos) << m;
   EXPECT_STREQ(cl::errorName(CL_OUT_OF_RESOURCES), "CL_OUT_OF_RESOURCES");
   EXPECT_STREQ(cl::errorName(-12345), "unknown OpenCL error");
 }

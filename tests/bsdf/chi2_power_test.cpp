@@ -28,7 +28,7 @@ class Mismatched final : public Bsdf {
   float k_;
 };
 
-const double kLevel = 1.0 - std::pow(1.0 - 1e-3, 1.0 / 32.0);  // the per-test level of test_sampling
+const double kLevel = 1.0 - std::pow(1.0 - 1e-3, 1.0 / 32.0);  // the per-test level of sampling_test
 
 TEST(Chi2Power, RejectsWrongRoughness) {
   BsdfPtr a = make("roughconductor", {str("distribution", "ggx"), num("alpha", 0.33)});

@@ -1,0 +1,16 @@
+#pragma once
+// The parameters every integrator shares with Mitsuba's path tracer, read once here:
+//   max_depth      -1   longest path in segments (-1 unbounded; 1 = directly visible emission only)
+//   rr_depth        5   segments before Russian roulette starts (≥ 1)
+//   hide_emitters false directly visible emitters render black
+#include "scene/param_reader.h"
+#include "scene/scene.h"
+
+namespace rc {
+
+void readPathParams(ParamReader& in, IntegratorSettings& settings);
+
+// Whether a path of `segments` segments is within max_depth (-1: always).
+inline bool withinMaxDepth(int maxDepth, int segments) { return maxDepth < 0 || segments <= maxDepth; }
+
+}  // namespace rc

@@ -1,0 +1,126 @@
+// The integrator registry: names, parameter lists for -D routing, aliases (volpath, direct),
+// unknown types and unused parameters with their locations, and nested integrators.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "app/integrator_registry.h"
+#include "core/error.h"
+#include "scene/param_reader.h"
+#include "scene/scene_loader.h"
+
+namespace rc {
+namespace {
+
+bool contains(const std::vector<std::string>& v, const std::string& s) {
+  return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+std::string errorOf(IntegratorSettings s, bool lenient = false, std::vector<std::string>* warnings = nullptr) {
+  try {
+    makeIntegrator(std::move(s), lenient, true, warnings);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+Scene loadIntegratorXml(const std::string& integratorXml) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rc_registry_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "scene.xml").string();
+  std::ofstream(path) << "<scene version=\"3.0.0\">\n"
+                       << integratorXml << "\n<sensor type=\"perspective\"/>\n</scene>\n";
+  return loadScene(path, LoadOptions{}, nullptr);
+}
+
+TEST(IntegratorRegistry, ParameterNamesRouteDefines) {
+  const auto path = integratorParameterNames("path");
+  EXPECT_TRUE(contains(path, "max_depth"));
+  EXPECT_TRUE(contains(path, "rr_depth"));
+  EXPECT_FALSE(contains(path, "rays"));  // -D rays=... is a scene parameter for path
+  const auto rcache = integratorParameterNames("rcache");
+  for (const char* n : {"max_depth", "a", "rays", "order", "frame", "mode", "share_pixel", "light_samples"})
+    EXPECT_TRUE(contains(rcache, n)) << n;
+  EXPECT_EQ(integratorParameterNames("volpath"), path);
+  EXPECT_TRUE(contains(integratorParameterNames("direct"), "emitter_samples"));
+  EXPECT_FALSE(contains(integratorParameterNames("direct"), "max_depth"));
+  EXPECT_TRUE(integratorParameterNames("bdpt").empty());
+}
+
+TEST(IntegratorRegistry, MakesEveryEntry) {
+  for (const IntegratorEntry& e : integratorEntries()) {
+    IntegratorSettings s;
+    s.type = e.name;
+    const IntegratorEntry* chosen = nullptr;
+    auto integ = makeIntegrator(s, false, true, nullptr, &chosen);
+    ASSERT_TRUE(integ) << e.name;
+    EXPECT_EQ(chosen, &e);
+  }
+}
+
+TEST(IntegratorRegistry, UnknownTypeAndUnusedParameterAreLocated) {
+  Scene s = loadIntegratorXml("<integrator type=\"bdpt\"/>");
+  const std::string unknown = errorOf(s.integrator);
+  EXPECT_NE(unknown.find("scene.xml:2"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("unknown integrator 'bdpt'"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("rcache"), std::string::npos) << unknown;  // lists the known ones
+  std::vector<std::string> warnings;
+  EXPECT_EQ(errorOf(s.integrator, true, &warnings), "");
+  ASSERT_EQ(warnings.size(), 1u);
+
+  s = loadIntegratorXml("<integrator type=\"path\">\n<float name=\"a\" value=\"0.3\"/></integrator>");
+  const std::string unused = errorOf(s.integrator);
+  EXPECT_NE(unused.find("scene.xml:3"), std::string::npos) << unused;
+  EXPECT_NE(unused.find("unsupported parameter 'a'"), std::string::npos) << unused;
+  // The same parameter is rcache's own.
+  s.integrator.type = "rcache";
+  EXPECT_EQ(errorOf(s.integrator), "");
+}
+
+TEST(IntegratorRegistry, ValuesAreCheckedWhereWritten) {
+  Scene s = loadIntegratorXml("<integrator type=\"rcache\">\n<integer name=\"rays\" value=\"4\"/></integrator>");
+  const std::string m = errorOf(s.integrator);
+  EXPECT_NE(m.find("scene.xml:3"), std::string::npos) << m;
+  EXPECT_NE(m.find("'rays'"), std::string::npos) << m;
+  IntegratorSettings text;
+  text.type = "rcache";
+  text.props.set("frame", textProperty("sideways"));
+  EXPECT_NE(errorOf(text).find("must be one of auto, world, record"), std::string::npos);
+  text.props.set("frame", textProperty("record"));
+  text.props.set("a", textProperty("0.3"));  // -D values arrive as text and are parsed as the read asks
+  EXPECT_EQ(errorOf(text), "");
+}
+
+TEST(IntegratorRegistry, DirectIsPathToDepthTwo) {
+  IntegratorSettings s;
+  s.type = "direct";
+  s.props.set("hide_emitters", textProperty("true"));
+  ParamReader in(&s.props);
+  findIntegrator("direct")->readParams(in, s);
+  EXPECT_EQ(s.maxDepth, 2);
+  EXPECT_GT(s.rrDepth, 2);  // no Russian roulette within two segments
+  EXPECT_TRUE(s.hideEmitters);
+  IntegratorSettings many;
+  many.type = "direct";
+  many.props.set("emitter_samples", textProperty("4"));
+  EXPECT_NE(errorOf(many).find("'emitter_samples' other than 1 is not supported"), std::string::npos);
+}
+
+TEST(IntegratorRegistry, NestedIntegratorRendersTheInnerOne) {
+  const Scene s = loadIntegratorXml(
+      "<integrator type=\"aov\"><string name=\"aovs\" value=\"dd.y:depth\"/>\n"
+      "<integrator type=\"moment\"><integrator type=\"path\"><integer name=\"max_depth\" value=\"4\"/></integrator>"
+      "</integrator></integrator>");
+  EXPECT_EQ(s.integrator.type, "path");
+  EXPECT_EQ(s.integrator.maxDepth, 4);
+  ASSERT_EQ(s.integrator.wrappers.size(), 2u);
+  EXPECT_EQ(s.integrator.wrappers[0], "aov");
+  EXPECT_EQ(s.integrator.wrappers[1], "moment");
+  EXPECT_EQ(errorOf(s.integrator), "");
+}
+
+}  // namespace
+}  // namespace rc
