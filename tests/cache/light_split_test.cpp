@@ -122,17 +122,7 @@ Scene skyScene(int res) {
   b.bsdf = 2;
   s.spheres.push_back(b);
   s.emitters.push_back(skyEmitter(400.0f));
-  const Vec3 eye(0, 1.6f, 3.2f), target(0, 0.3f, 0), up(0, 1, 0);
-  const Vec3 dir = glm::normalize(target - eye);
-  const Vec3 left = glm::normalize(glm::cross(up, dir));
-  const Vec3 newUp = glm::cross(dir, left);
-  s.camera.toWorld = Mat4(Vec4(left, 0), Vec4(newUp, 0), Vec4(dir, 0), Vec4(eye, 1));
-  s.camera.fovDegrees = 45.0f;
-  s.film.width = res;
-  s.film.height = res;
-  s.film.filter = "box";
-  s.sampleCount = 1;
-  s.integrator.maxDepth = 3;
+  test::setTestCamera(s, Vec3(0, 1.6f, 3.2f), Vec3(0, 0.3f, 0), res, res);
   return s;
 }
 
