@@ -36,7 +36,8 @@
 //                       surface, else world frame) | world (records stored world-aligned) | record
 //   mode         radiance  radiance | tl (Tabellion–Lamorlette dominant-direction approximation)
 //   batch        256    records sampled and projected together
-//   share_pixel  true   samples of one pixel on the same surface share one cache lookup
+//   share_pixel  true   samples of one pixel on the same surface share a cache lookup, in groups of
+//                       ⌈√spp⌉ samples (one lookup per pixel would be an error floor; final_pass.cpp)
 //   light_samples 1     light samples per pixel sample for the final pass's direct light (one BSDF
 //                       sample beside them, MIS-weighted for the count); more buys about what more
 //                       spp would, at a similar ray cost
