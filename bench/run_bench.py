@@ -51,6 +51,7 @@ FULL = dict(res=512, ref_spp=4096, path_spp=[4, 8, 16, 32, 64, 128, 256], mitsub
                     (dict(rays=128, a=0.6), 16), (dict(adapt=0.05, rays=128, a=0.6), 16),
                     (dict(adapt=0.05, rays=256, a=0.5), 16)],
             variants=[("adaptive=true", {"adaptive": "true"}), ("gradients=false", {"gradients": "false"}),
+                      ("env_cache=false", {"env_cache": "false"}), ("fallback=false", {"fallback": "false"}),
                       ("frame=world", {"frame": "world"}), ("mode=tl", {"mode": "tl"})],
             variant_spp=16)
 QUICK = dict(res=96, ref_spp=1024, path_spp=[1, 4, 16, 64], mitsuba_spp=[4, 16, 64, 256],
@@ -58,6 +59,7 @@ QUICK = dict(res=96, ref_spp=1024, path_spp=[1, 4, 16, 64], mitsuba_spp=[4, 16, 
              rcache=[(dict(), 2), (dict(), 8), (dict(), 32), (dict(rays=256, a=0.5), 8), (dict(rays=256, a=0.5), 32),
                      (dict(rays=1024, a=0.3), 32), (dict(adapt=0.05), 8)],
              variants=[("adaptive=true", {"adaptive": "true"}), ("frame=world", {"frame": "world"}),
+                       ("env_cache=false", {"env_cache": "false"}), ("fallback=false", {"fallback": "false"}),
                        ("mode=tl", {"mode": "tl"})],
              variant_spp=8)
 

@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages rcache needs, only those missing (idempotent; no network when
 # everything is present). Run as root or with sudo available.
 set -euo pipefail
-packages=(cmake g++ make pkg-config libembree-dev libopenimageio-dev libopenexr-dev libpugixml-dev libglm-dev
+packages=(cmake g++ make pkg-config libembree-dev libopenimageio-dev libopenexr-dev libpugixml-dev libglm-dev zlib1g-dev
           ocl-icd-opencl-dev opencl-headers pocl-opencl-icd clinfo libgtest-dev libbenchmark-dev
           clang libclang-rt-14-dev)
 missing=()

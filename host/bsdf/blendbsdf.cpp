@@ -70,8 +70,12 @@ class BlendBsdf final : public Bsdf {
 std::shared_ptr<Bsdf> createBlendBsdf(const Properties& props, const std::vector<BsdfPtr>& nested) {
   if (nested.size() != 2)
     throw Error("<bsdf type=\"blendbsdf\">: needs exactly two nested BSDFs, got " + std::to_string(nested.size()));
-  for (const BsdfPtr& b : nested)
+  for (const BsdfPtr& b : nested) {
     if (!b) throw Error("<bsdf type=\"blendbsdf\">: nested BSDF is null");
+    // A texture factor on one of two blended BSDFs does not scale the blend as a whole.
+    if (b->tinted())
+      throw Error("<bsdf type=\"blendbsdf\">: a nested BSDF with a textured reflectance is not supported");
+  }
   const float w = readFloatIn(props, "weight", 0.5f, 0.0f, 1.0f);
   return std::make_shared<BlendBsdf>(w, nested[0], nested[1]);
 }

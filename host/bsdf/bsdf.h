@@ -54,6 +54,13 @@ class Bsdf {
   virtual std::string parameterKey() const = 0;
   virtual std::string typeName() const = 0;
 
+  // A colour factor on the whole BSDF at surface coordinates uv: a texture on a parameter that
+  // scales every value (diffuse `reflectance`, a conductor's `specular_reflectance`). eval, pdf and
+  // sample describe the BSDF with that factor 1, so coefficient tables stay per material; callers
+  // multiply what leaves the shading point by tint(). `wo` (local) selects the side of a twosided.
+  virtual Color tint(const Vec2& /*uv*/, const Vec3& /*wo*/) const { return Color(1.0f); }
+  virtual bool tinted() const { return false; }
+
   std::string id;  // the scene's id attribute, or "<type>#<n>" when anonymous
 };
 

@@ -24,6 +24,7 @@ const FactoryEntry kFactory[] = {
     {"plastic", createPlasticBsdf, 0, 0},
     {"roughplastic", createRoughPlasticBsdf, 0, 0},
     {"dielectric", createDielectricBsdf, 0, 0},
+    {"thindielectric", createThinDielectricBsdf, 0, 0},
     {"twosided", createTwoSidedBsdf, 1, 2},
     {"blendbsdf", createBlendBsdf, 2, 2},
     {"merl", createMerlBsdf, 0, 0},

@@ -100,4 +100,17 @@ std::string hexFloat(float v) {
 
 std::string hexColor(const Color& c) { return hexFloat(c.r) + "," + hexFloat(c.g) + "," + hexFloat(c.b); }
 
+DielectricParams readDielectricParams(const Properties& props) {
+  DielectricParams d;
+  d.eta = readIor(props, "int_ior", "bk7") / readIor(props, "ext_ior", "air");
+  d.reflectance = readReflectance(props, "specular_reflectance", 1.0f);
+  d.transmittance = readReflectance(props, "specular_transmittance", 1.0f);
+  return d;
+}
+
+std::string DielectricParams::key() const {
+  return "eta=" + hexFloat(eta) + ";specular_reflectance=" + hexColor(reflectance) +
+         ";specular_transmittance=" + hexColor(transmittance);
+}
+
 }  // namespace rc

@@ -21,6 +21,15 @@ float readIor(const Properties& props, const std::string& name, const std::strin
 // Looks up a named IOR (lower-case). Returns false when the name is not in the table.
 bool lookupIorName(const std::string& name, float* value);
 
+// The parameters of the smooth dielectric interfaces (dielectric, thindielectric): η = int_ior /
+// ext_ior (defaults bk7 / air) and the two multipliers; key() is their parameterKey text.
+struct DielectricParams {
+  float eta = 1.0f;
+  Color reflectance{1.0f}, transmittance{1.0f};
+  std::string key() const;
+};
+DielectricParams readDielectricParams(const Properties& props);
+
 // Exact text of a float ("%a"), so keys differ whenever values differ by one ulp.
 std::string hexFloat(float v);
 std::string hexColor(const Color& c);

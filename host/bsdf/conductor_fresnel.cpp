@@ -1,6 +1,7 @@
 #include "bsdf/conductor_fresnel.h"
 
 #include "bsdf/bsdf_params.h"
+#include "bsdf/conductor_presets.h"
 
 namespace rc {
 
@@ -19,10 +20,10 @@ ConductorFresnel readConductorFresnel(const Properties& props) {
   if (material != "none") {
     if (props.has("eta") || props.has("k"))
       throwParamError(props, "material", "give either 'eta'/'k' or 'material', not both");
-    throwParamError(props, "material",
-                    "unsupported material preset '" + material +
-                        "' (Mitsuba derives its RGB values from spectral data files not shipped here); "
-                        "give 'eta' and 'k' as rgb values, or material \"none\" for F = 1");
+    if (!lookupConductorPreset(material, &f.eta, &f.k))
+      throwParamError(props, "material", "unknown conductor material '" + material + "' (known: none, " +
+                                              conductorPresetNames() + ")");
+    return f;
   }
   f.eta = readFiniteNonNegative(props, "eta", 0.0f);
   f.k = readFiniteNonNegative(props, "k", 1.0f);

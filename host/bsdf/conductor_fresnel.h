@@ -2,8 +2,7 @@
 // The Fresnel parameters shared by `conductor` and `roughconductor` (Mitsuba 3 semantics):
 // material "none" (default) with no eta → eta = 0, k = 1, for which the conductor Fresnel equations
 // give exactly F ≡ 1 (an ideal mirror); eta/k given → complex Fresnel with those RGB values
-// (k defaults to 1 as in Mitsuba). Named material presets need Mitsuba's spectral data files, whose
-// RGB projections we cannot reproduce exactly, so they are rejected with a clear error.
+// (k defaults to 1 as in Mitsuba); a named material → its RGB η/k (conductor_presets.h).
 #include <string>
 
 #include "bsdf/fresnel.h"

@@ -45,8 +45,7 @@ class DielectricBsdf final : public Bsdf {
   }
   uint32_t lobes() const override { return kLobeDelta | kLobeTransmission; }
   std::string parameterKey() const override {
-    return "dielectric(eta=" + hexFloat(eta_) + ";specular_reflectance=" + hexColor(reflectance_) +
-           ";specular_transmittance=" + hexColor(transmittance_) + ")";
+    return "dielectric(" + DielectricParams{eta_, reflectance_, transmittance_}.key() + ")";
   }
   std::string typeName() const override { return "dielectric"; }
 
@@ -58,11 +57,8 @@ class DielectricBsdf final : public Bsdf {
 }  // namespace
 
 std::shared_ptr<Bsdf> createDielectricBsdf(const Properties& props, const std::vector<BsdfPtr>&) {
-  const float intIor = readIor(props, "int_ior", "bk7");
-  const float extIor = readIor(props, "ext_ior", "air");
-  const Color refl = readReflectance(props, "specular_reflectance", 1.0f);
-  const Color trans = readReflectance(props, "specular_transmittance", 1.0f);
-  return std::make_shared<DielectricBsdf>(intIor / extIor, refl, trans);
+  const DielectricParams d = readDielectricParams(props);
+  return std::make_shared<DielectricBsdf>(d.eta, d.reflectance, d.transmittance);
 }
 
 }  // namespace rc

@@ -16,6 +16,7 @@ std::shared_ptr<Bsdf> createConductorBsdf(const Properties& props, const std::ve
 std::shared_ptr<Bsdf> createPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
 std::shared_ptr<Bsdf> createRoughPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
 std::shared_ptr<Bsdf> createDielectricBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+std::shared_ptr<Bsdf> createThinDielectricBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
 std::shared_ptr<Bsdf> createTwoSidedBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
 std::shared_ptr<Bsdf> createBlendBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
 std::shared_ptr<Bsdf> createMerlBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);

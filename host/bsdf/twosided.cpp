@@ -43,6 +43,10 @@ class TwoSidedBsdf final : public Bsdf {
     return "twosided(" + front_->parameterKey() + ";" + back_->parameterKey() + ")";
   }
   std::string typeName() const override { return "twosided"; }
+  Color tint(const Vec2& uv, const Vec3& wo) const override {
+    return wo.z < 0.0f ? back_->tint(uv, flipZ(wo)) : front_->tint(uv, wo);
+  }
+  bool tinted() const override { return front_->tinted() || back_->tinted(); }
 
  private:
   BsdfPtr front_, back_;
@@ -55,8 +59,12 @@ std::shared_ptr<Bsdf> createTwoSidedBsdf(const Properties& props, const std::vec
     throw Error("<bsdf type=\"twosided\">: needs one or two nested BSDFs, got " + std::to_string(nested.size()));
   for (const BsdfPtr& b : nested) {
     if (!b) throw Error("<bsdf type=\"twosided\">: nested BSDF is null");
+    // The radiance cache mirrors a two-sided point's frame to the viewer, so it cannot tell the
+    // sides apart for a per-side texture factor.
+    if (nested.size() == 2 && b->tinted())
+      throw Error("<bsdf type=\"twosided\">: a textured reflectance on one of two different sides is not supported");
     // Mitsuba accepts only one-sided BSDFs here; these two already have a back side.
-    if (b->typeName() == "twosided" || b->typeName() == "dielectric")
+    if (b->typeName() == "twosided" || b->typeName() == "dielectric" || b->typeName() == "thindielectric")
       throw Error("<bsdf type=\"twosided\">: nested '" + b->typeName() + "' is already two-sided");
   }
   (void)props;

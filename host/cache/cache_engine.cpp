@@ -59,6 +59,20 @@ CacheEngine::CacheEngine(const RenderContext& ctx, const RcacheParams& params, c
       planOrder_[i] = params.tlMode ? 3 : plan->shOrder;
     }
   }
+  // Without a cached material no record exists to carry the environment; the TL approximation
+  // treats a record's light as one direction, which a sky is not.
+  bool anyCached = false;
+  for (Technique t : planTech_) anyCached |= isCached(t);
+  const bool split = anyCached && !params.tlMode;
+  envSplit_ = std::make_unique<LightSplit>(ctx.scene, split && params.envCache, params.envVariance,
+                                           split && params.areaCache);
+  if (envSplit_->active())
+    residualCtx_ = std::make_unique<RenderContext>(RenderContext{ctx.scene, ctx.accel, envSplit_->residualLights(),
+                                                                 ctx.options, ctx.backend, ctx.cancel, ctx.progress});
+}
+
+const RenderContext& CacheEngine::directLightContext(const ShadePoint& sp) const {
+  return residualCtx_ && hasIndirect(sp) && isCached(technique(sp)) ? *residualCtx_ : ctx_;
 }
 
 float CacheEngine::footprint(const Vec3& p) const {
@@ -115,15 +129,21 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
       const bool continues = continuesPath(sp);
       Rng rng = continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1);
       const Bsdf& bsdf = *ctx_.scene.bsdfs[sp.hit.bsdf];
-      const Color L = continues             ? lightStrategyMis(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng, sp.lightSamples)
-                      : bsdf.isDiffuseOnly() ? directLightLightOnly(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng)
-                                             : directLight(ctx_, sp.hit, sp.frame, sp.wo, bsdf, rng);
+      const RenderContext& lights = directLightContext(sp);
+      const Color L = continues             ? lightStrategyMis(lights, sp.hit, sp.frame, sp.wo, bsdf, rng, sp.lightSamples)
+                      : bsdf.isDiffuseOnly() ? directLightLightOnly(lights, sp.hit, sp.frame, sp.wo, bsdf, rng)
+                                             : directLight(lights, sp.hit, sp.frame, sp.wo, bsdf, rng);
       if (isFinite(L)) out[i] = L;
     }
   });
   std::vector<Color> ind;
   indirect(pts, ind, nullptr, relaxedScale);
-  for (size_t i = 0; i < pts.size(); ++i) out[i] += ind[i];
+  for (size_t i = 0; i < pts.size(); ++i) {
+    out[i] += ind[i];
+    // A textured factor scales everything the point reflects (Bsdf::tint), after the cache.
+    const Bsdf* bsdf = pts[i].active ? ctx_.scene.bsdfs[pts[i].hit.bsdf].get() : nullptr;
+    if (bsdf && bsdf->tinted()) out[i] *= bsdf->tint(pts[i].hit.uv, pts[i].wo);
+  }
 }
 
 void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color>& out, std::vector<LookupAov>* aov,
@@ -405,8 +425,13 @@ void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectB
   next.shrink_to_fit();
   rayBatch.radiance.resize(total * 3);
   rayBatch.distance.resize(total);
+  const bool carriesEnvironment = envSplit_->active();
   parallelFor(total, 16384, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
+      // An escaping ray brings the environment's cached part, a ray that hits a cached area
+      // emitter its emission (the rest is the direct light of the points that use this record).
+      if (carriesEnvironment)
+        L[i] += hits[i].valid() ? envSplit_->cachedEmission(hits[i], rays[i].d) : envSplit_->cached(rays[i].d);
       for (int c = 0; c < 3; ++c) rayBatch.radiance[3 * i + c] = L[i][c];
       rayBatch.distance[i] = hits[i].valid() ? hits[i].t : 0.0f;
     }

@@ -11,6 +11,9 @@
 // without their own emission (that light is direct light, computed exactly), i.e. the
 // radianceOut of depth d+1 points, so the sum equals the path tracer's estimate of the same
 // integral (same max_depth).
+// Environment light (cache/light_split.h): a record ray that escapes carries the cached
+// part of the environment, so points whose indirect light comes from records take their direct
+// light from directLightContext() — the scene's lights with only the environment's residual.
 // Caches are keyed by (level, order) — and by depth when max_depth is finite, because then
 // records at different depths hold different integrals. Level 0 caches use a; level l uses
 // a·secondary_a_scale^l and secondary_rays.
@@ -25,6 +28,7 @@
 
 #include "brdf/material_plan.h"
 #include "cache/cache_params.h"
+#include "cache/light_split.h"
 #include "cache/radiance_cache.h"
 #include "cache/shade_point.h"
 #include "render/camera.h"
@@ -87,6 +91,10 @@ class CacheEngine {
   // Whether indirect() gives sp any indirect light at all (max_depth and the hard depth limit).
   bool hasIndirect(const ShadePoint& sp) const;
   CacheKey keyFor(const ShadePoint& sp) const;
+  // The lights sp's direct light samples: the residual ones where its indirect light comes from
+  // records that carry the cached environment, else the scene's.
+  const RenderContext& directLightContext(const ShadePoint& sp) const;
+  const LightSplit& lightSplit() const { return *envSplit_; }
   int maxDepth() const { return maxDepth_; }
 
   std::map<CacheKey, std::unique_ptr<RadianceCache>>& caches() { return caches_; }
@@ -109,6 +117,8 @@ class CacheEngine {
   std::vector<int> planOrder_;  // per bsdf: record order
   std::vector<bool> twoSided_;
   std::map<CacheKey, std::unique_ptr<RadianceCache>> caches_;
+  std::unique_ptr<LightSplit> envSplit_;
+  std::unique_ptr<RenderContext> residualCtx_;  // ctx_ with envSplit_'s residual lights
   EngineStats stats_;
   std::vector<int> recordPixels_;
   uint64_t recordCounter_ = 0;

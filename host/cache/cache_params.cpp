@@ -27,6 +27,11 @@ RcacheParams readRcacheParams(ParamReader& in) {
   p.batch = in.integer("batch", p.batch, 1, 1 << 16);
   p.sharePixel = in.flag("share_pixel", p.sharePixel);
   p.lightSamples = in.integer("light_samples", p.lightSamples, 1, 64);
+  p.envCache = in.flag("env_cache", p.envCache);
+  p.envVariance = in.real("env_variance", p.envVariance, 1e-6f, 1e6f);
+  p.areaCache = in.flag("area_cache", p.areaCache);
+  p.fallback = in.flag("fallback", p.fallback);
+  p.fallbackShare = in.real("fallback_share", p.fallbackShare, 0.0f, 1.0f);
   const std::string frame = in.choice("frame", "auto", {"auto", "world", "record"});
   p.worldFrame = frame != "record";
   p.autoFrame = frame == "auto";

@@ -25,6 +25,11 @@ struct RcacheParams {
   int batch = 256;
   bool sharePixel = true;
   int lightSamples = 1;
+  bool envCache = true;
+  float envVariance = 1.0f / 3.0f;
+  bool areaCache = false;
+  bool fallback = true;
+  float fallbackShare = 0.25f;
 };
 
 // Throws rc::Error("parameter 'x' = '...': ...") for a malformed or out-of-range value.

@@ -1,6 +1,7 @@
 #include "cache/final_pass.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "cache/rng_salts.h"
 #include "core/error.h"
@@ -116,15 +117,19 @@ void FinalPass::shadeSamples(int y0, const SampleRange* ranges, size_t pixels, T
 }
 
 // Cached indirect light is smooth (the cache itself interpolates over ≥ r_min pixels), so the
-// samples of one pixel that land on the same surface share one lookup at the first of them;
+// samples of one pixel that land on the same surface share a lookup at the first of them;
 // direct light, emission and importance-sampled (sharp) materials stay per sample, so edges,
-// shadows and sharp reflections keep their anti-aliasing. share_pixel=false: one lookup per
-// sample. rep[i] = the sample whose lookup sample i uses. Everything per pixel runs in parallel
+// shadows and sharp reflections keep their anti-aliasing. A lookup is shared by at most ⌈√spp⌉
+// samples (see shareGroup). share_pixel=false: one lookup per sample. rep[i] = the sample whose lookup sample i uses. Everything per pixel runs in parallel
 // over pixels.
 void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vector<size_t>& offset,
                               const std::vector<uint32_t>& active, Samples& s) {
   const int W = run_.width, maxDepth = run_.engine.maxDepth();
   const RcacheParams& params = run_.params;
+  // One lookup for all of a pixel's samples would make the cached term a single point sample of
+  // the pixel, an error no spp removes (a floor); groups of ⌈√spp⌉ samples keep the lookups at
+  // √spp of one per sample while that error falls with spp.
+  const int shareGroup = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(std::max(1, run_.spp)))));
   const size_t n = offset.back();
   s.prim.resize(n);
   s.direct.assign(n, Color(0.0f));
@@ -132,6 +137,7 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
   s.rep.resize(n);
   parallelFor(active.size(), 16, [&](size_t jb, size_t je) {
     std::vector<uint32_t> pixelReps;
+    std::vector<int> repShares;  // samples using each representative's lookup
     uint64_t lightOnlyCount = 0;
     // One stream per sample: camera, then direct light, then (importance-sampled materials) the
     // continuation's BSDF sample, all from the pixel's low-discrepancy dimensions where the
@@ -157,6 +163,7 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
       const size_t q = active[j];
       const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
       pixelReps.clear();
+      repShares.clear();
       for (int si = ranges[q].first; si < ranges[q].end; ++si) {
         const size_t i = offset[q] + (si - ranges[q].first), k = i - first;
         s.sampleIndex[i] = si;
@@ -169,9 +176,10 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
           sp.lightSamples = params.lightSamples;
           bool lightOnly = false;
           // Importance-sampled points: the continuation's ray doubles as the BSDF sample.
+          const RenderContext& lights = run_.engine.directLightContext(sp);
           s.direct[i] = run_.engine.continuesPath(sp)
-                            ? lightStrategyMis(run_.ctx, sp.hit, sp.frame, sp.wo, bsdf, rng, params.lightSamples)
-                            : directLightCheapest(run_.ctx, sp.hit, sp.frame, sp.wo, bsdf, rng, params.lightSamples,
+                            ? lightStrategyMis(lights, sp.hit, sp.frame, sp.wo, bsdf, rng, params.lightSamples)
+                            : directLightCheapest(lights, sp.hit, sp.frame, sp.wo, bsdf, rng, params.lightSamples,
                                                   &lightOnly);
           if (lightOnly) ++lightOnlyCount;
         }
@@ -179,16 +187,21 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
         s.rep[i] = static_cast<uint32_t>(i);
         const bool cached = sp.active && isCached(run_.engine.technique(sp));
         if (params.sharePixel && cached) {
-          for (uint32_t r : pixelReps) {
+          for (size_t k = 0; k < pixelReps.size(); ++k) {
+            const uint32_t r = pixelReps[k];
             const ShadePoint& o = s.prim[r].sp;
-            if (o.hit.bsdf == sp.hit.bsdf && o.hit.mesh == sp.hit.mesh && o.hit.sphere == sp.hit.sphere &&
-                glm::dot(o.frame.n, sp.frame.n) > kSharedLookupMinCos) {
+            if (repShares[k] < shareGroup && o.hit.bsdf == sp.hit.bsdf && o.hit.mesh == sp.hit.mesh &&
+                o.hit.sphere == sp.hit.sphere && glm::dot(o.frame.n, sp.frame.n) > kSharedLookupMinCos) {
               s.rep[i] = r;
+              ++repShares[k];
               break;
             }
           }
         }
-        if (s.rep[i] == i && cached) pixelReps.push_back(static_cast<uint32_t>(i));
+        if (s.rep[i] == i && cached) {
+          pixelReps.push_back(static_cast<uint32_t>(i));
+          repShares.push_back(1);
+        }
       }
     }
     directLightOnly_ += lightOnlyCount;
@@ -201,7 +214,9 @@ void FinalPass::splat(const Samples& s, const std::vector<Color>& repIndirect, c
   for (size_t i = 0; i < s.prim.size(); ++i) {
     const ShadePoint& sp = s.prim[i].sp;
     const LookupAov& la = repAov[slot[s.rep[i]]];
-    const Color L = s.prim[i].Le + s.direct[i] + repIndirect[slot[s.rep[i]]];
+    const Bsdf* bsdf = sp.active ? run_.ctx.scene.bsdfs[sp.hit.bsdf].get() : nullptr;
+    const Color tint = bsdf && bsdf->tinted() ? bsdf->tint(sp.hit.uv, sp.wo) : Color(1.0f);  // Bsdf::tint
+    const Color L = s.prim[i].Le + tint * (s.direct[i] + repIndirect[slot[s.rep[i]]]);
     const int px = sp.pixel % W, py = sp.pixel / W;
     if (isFinite(L)) {
       tile.splat(s.prim[i].filmPos, L);

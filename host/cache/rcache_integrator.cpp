@@ -1,6 +1,7 @@
 #include "cache/rcache_integrator.h"
 
 #include <cmath>
+#include <cstring>
 
 #include "brdf/material_plan.h"
 #include "cache/adaptive_rounds.h"
@@ -10,15 +11,18 @@
 #include "cache/cache_params.h"
 #include "cache/final_pass.h"
 #include "cache/final_pass_memory.h"
+#include "cache/path_fallback.h"
 #include "cache/primary_hits.h"
 #include "cache/rcache_run.h"
 #include "cache/rcache_stats.h"
 #include "cl/sh_backend.h"
 #include "core/error.h"
+#include "core/rng.h"
 #include "core/timing.h"
 #include "geometry/scene_bounds.h"
 #include "render/camera.h"
 #include "render/film.h"
+#include "render/path_integrator.h"
 #include "render/render_loop.h"
 
 namespace rc {
@@ -82,7 +86,22 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   const PrimaryHits primaries(ctx, engine, camera, settings_.maxDepth, settings_.hideEmitters);
   const RcacheRun run{ctx, params_, tables, camera, engine, primaries, film.width(), film.height(),
                       spp, scene.samplerSeed + ctx.options.seed, usesLowDiscrepancy(ctx)};
-  const uint64_t sceneHash = cacheSceneHash(scene, settings_.maxDepth, params_.tlMode);
+  // Records hold the cached part of the scene's light: a cache saved under another split must not load.
+  const LightSplitSummary& split = engine.lightSplit().summary();
+  uint32_t thresholdBits = 0;
+  std::memcpy(&thresholdBits, &split.threshold, sizeof(thresholdBits));
+  const uint64_t splitKey = split.active ? (uint64_t(thresholdBits) << 2 | uint64_t(split.environmentCached) << 1 |
+                                            uint64_t(split.areaCached)) + 1 : 0;
+  const uint64_t sceneHash = hashMix(cacheSceneHash(scene, settings_.maxDepth, params_.tlMode), splitKey);
+
+  // Phase 0: a pilot decides whether the cache can pay here at all (cache/path_fallback.h).
+  const FallbackDecision fallback = decideFallback(run);
+  if (fallback.pathTrace) {
+    Image img = makePathIntegrator(settings_)->render(ctx, stats);
+    stats.setText("fallback", fallback.reason);
+    stats.set("pilot_served_share", fallback.servedShare);
+    return img;
+  }
 
   const size_t recordsLoaded = ctx.options.cacheLoad.empty() ? 0
       : loadCachesInto(engine, ctx.options.cacheLoad, sceneHash, params_.worldFrame, backend);
@@ -111,6 +130,8 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
 
   reportRcacheStats(run, {secondsSince(start), tablesS, finalS, fill, pass, adaptive, recordsLoaded, interrupted},
                     stats);
+  stats.setText("fallback", fallback.reason);
+  if (fallback.pilotPoints > 0) stats.set("pilot_served_share", fallback.servedShare);
   return img;
 }
 

@@ -36,10 +36,23 @@
 //                       surface, else world frame) | world (records stored world-aligned) | record
 //   mode         radiance  radiance | tl (Tabellion–Lamorlette dominant-direction approximation)
 //   batch        256    records sampled and projected together
-//   share_pixel  true   samples of one pixel on the same surface share one cache lookup
+//   share_pixel  true   samples of one pixel on the same surface share a cache lookup, in groups of
+//                       ⌈√spp⌉ samples (one lookup per pixel would be an error floor; final_pass.cpp)
 //   light_samples 1     light samples per pixel sample for the final pass's direct light (one BSDF
 //                       sample beside them, MIS-weighted for the count); more buys about what more
 //                       spp would, at a similar ray cost
+//   env_cache    true   records carry the smooth part of the environment light (constant, envmap)
+//                       and only its compact bright residual is light-sampled per pixel sample
+//                       (cache/light_split.h); false: all of it light-sampled
+//   env_variance 0.333  κ of that split: the cached part's variance over any hemisphere stays
+//                       ≤ κ·(brightest hemisphere's mean)² (1/3: a diffuse record's own cosine
+//                       weight under a uniform sky)
+//   area_cache   false  records also carry the emission of the area lights their rays hit, and
+//                       cached points no longer light-sample those (off: measured not to pay,
+//                       bench/RESULTS.md "Environment light in the cache")
+//   fallback     true   a pilot decides before the fill whether the cache can pay; if it would
+//                       serve less than fallback_share of the image, the image is path traced
+//   fallback_share 0.25 that threshold (cache/path_fallback.h says why 0.25)
 #include <memory>
 
 #include "cache/cache_params.h"

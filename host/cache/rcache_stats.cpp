@@ -1,6 +1,7 @@
 #include "cache/rcache_stats.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "cl/sh_backend.h"
 #include "core/json_writer.h"
@@ -92,6 +93,17 @@ void reportModes(const RcacheRun& run, RenderStats& stats) {
   stats.set("lookups_lambertian", double(es.lambertianLookups.load()));
   stats.setText("mode", p.tlMode ? "tl (Tabellion-Lamorlette dominant direction)" : "radiance");
   stats.setJson("materials", run.tables.materialsJson());
+  // The light split (cache/light_split.h): τ and the power fractions on each side.
+  const LightSplitSummary& split = run.engine.lightSplit().summary();
+  if (split.environmentCached) {
+    stats.setText("env_cache", std::isfinite(split.threshold) ? "split" : "whole environment cached");
+    if (std::isfinite(split.threshold)) stats.set("env_threshold", split.threshold);
+    stats.set("env_cached_fraction", split.cachedFraction);
+    stats.set("env_sampled_fraction", split.sampledFraction);
+  } else {
+    stats.setText("env_cache", "off (" + split.reason + ")");
+  }
+  stats.setText("area_cache", split.areaCached ? "area emitters cached" : "off");
 }
 
 // What the render did not do, and why.

@@ -25,7 +25,8 @@ float horizontalFovDegrees(float fov, const std::string& axisIn, float aspect) {
 }
 
 CameraModel::CameraModel(const Camera& camera, int width, int height)
-    : toWorld_(camera.toWorld), width_(width), height_(height), nearClip_(camera.nearClip), farClip_(camera.farClip) {
+    : toWorld_(camera.toWorld), width_(width), height_(height), nearClip_(camera.nearClip), farClip_(camera.farClip),
+      principalPointOffset_(camera.principalPointOffset) {
   if (width <= 0 || height <= 0) throw Error("film: width and height must be positive");
   if (!(camera.fovDegrees > 0.0f && camera.fovDegrees < 180.0f))
     throw Error("perspective sensor: fov must be in (0, 180) degrees");
@@ -40,8 +41,8 @@ CameraModel::CameraModel(const Camera& camera, int width, int height)
 Ray CameraModel::generate(Vec2 filmPos) const {
   // Mitsuba 3 perspective_projection: sample x = 0.5·(1 − x_ndc), y = 0.5·(1 − aspect·y_ndc) with
   // x_ndc = x/(z·tan(fov_x/2)); so image left (u = 0) is local +x and image top is local +y.
-  const float sx = filmPos.x / static_cast<float>(width_);
-  const float sy = filmPos.y / static_cast<float>(height_);
+  const float sx = filmPos.x / static_cast<float>(width_) + principalPointOffset_.x;
+  const float sy = filmPos.y / static_cast<float>(height_) + principalPointOffset_.y;
   const Vec3 local((1.0f - 2.0f * sx) * tanHalfX_, (1.0f - 2.0f * sy) * tanHalfY_, 1.0f);
   Ray r;
   r.o = origin_;

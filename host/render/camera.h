@@ -31,6 +31,7 @@ class CameraModel {
   float tanHalfX_;    // tan(fovX/2): half-width of the image plane at z = 1
   float tanHalfY_;    // half-height at z = 1
   float nearClip_, farClip_;
+  Vec2 principalPointOffset_;  // Mitsuba's principal_point_offset_x/y, fractions of the film size
 };
 
 // Mitsuba's parse_fov: any fov_axis → horizontal fov in degrees. aspect = width / height.

@@ -11,9 +11,11 @@ namespace {
 bool hasSmoothLobe(const Bsdf& bsdf) { return (bsdf.lobes() & (kLobeDiffuse | kLobeGlossy)) != 0; }
 }  // namespace
 
-Color emitted(const Scene& scene, const Hit& hit, const Vec3& wo) {
+Color emitted(const Scene& scene, const Hit& hit, const Vec3& wo) { return emitted(scene.emitters, hit, wo); }
+
+Color emitted(const std::vector<Emitter>& emitters, const Hit& hit, const Vec3& wo) {
   if (!hit.valid() || hit.emitter < 0) return Color(0.0f);
-  const Emitter& e = scene.emitters[hit.emitter];
+  const Emitter& e = emitters[hit.emitter];
   if (e.type != EmitterType::Area) return Color(0.0f);
   return glm::dot(hit.ng, wo) > 0.0f ? e.radiance : Color(0.0f);
 }
@@ -76,7 +78,7 @@ Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorl
                  bool delta, int lightSamples) {
   const float n = static_cast<float>(lightSamples);
   if (next.valid()) {
-    const Color Le = emitted(ctx.scene, next, -dirWorld);
+    const Color Le = emitted(ctx.lights.emitters(), next, -dirWorld);
     if (maxComponent(Le) <= 0.0f) return Color(0.0f);
     if (delta) return Le;
     return Le * powerHeuristic(bsdfPdf, n * ctx.lights.pdf(next, from));

@@ -24,6 +24,9 @@ namespace rc {
 // Radiance emitted by an area emitter at `hit` toward direction wo (world, pointing away from the
 // surface). Area emitters emit toward +ng only (Mitsuba 3).
 Color emitted(const Scene& scene, const Hit& hit, const Vec3& wo);
+// The same for an emitter list indexed like scene.emitters (a light sampler's, which may carry
+// only part of the scene's light: emitterMis counts what the sampler's lights emit).
+Color emitted(const std::vector<Emitter>& emitters, const Hit& hit, const Vec3& wo);
 
 // Power heuristic (β = 2) weight of strategy a against b.
 inline float powerHeuristic(float pdfA, float pdfB) {

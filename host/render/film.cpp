@@ -11,6 +11,11 @@ ReconstructionFilter::ReconstructionFilter(const FilmSettings& s) {
   if (s.filter == "box") {
     box_ = true;
     radius_ = 0.5f;
+  } else if (s.filter == "tent") {
+    if (!(s.tentRadius > 0.0f && s.tentRadius <= 64.0f)) throw Error("rfilter tent: radius must be in (0, 64] pixels");
+    box_ = false;
+    tent_ = true;
+    radius_ = s.tentRadius;
   } else if (s.filter == "gaussian") {
     if (!(s.gaussianStddev > 0.0f) || !std::isfinite(s.gaussianStddev))
       throw Error("rfilter gaussian: stddev must be positive");
@@ -20,12 +25,13 @@ ReconstructionFilter::ReconstructionFilter(const FilmSettings& s) {
     alpha_ = -1.0f / (2.0f * s.gaussianStddev * s.gaussianStddev);
     bias_ = std::exp(alpha_ * radius_ * radius_);
   } else {
-    throw Error("rfilter: unknown type '" + s.filter + "' (box, gaussian)");
+    throw Error("rfilter: unknown type '" + s.filter + "' (box, tent, gaussian)");
   }
 }
 
 float ReconstructionFilter::eval(float x) const {
   if (box_) return (x >= -0.5f && x < 0.5f) ? 1.0f : 0.0f;
+  if (tent_) return std::max(0.0f, 1.0f - std::fabs(x) / radius_);
   return std::max(0.0f, std::exp(alpha_ * x * x) - bias_);
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Film: splats weighted radiance samples through a box or Gaussian reconstruction filter and
+// Film: splats weighted radiance samples through a box, tent or Gaussian reconstruction filter and
 // develops Σ w·L / Σ w per pixel (Mitsuba 3 ImageBlock semantics, so a constant radiance gives a
 // constant image whatever the filter). Tiles render into their own TileFilm (the tile plus a border
 // of the filter radius) and are merged into the Film in tile order, so the result does not depend on
@@ -24,6 +24,7 @@ class ReconstructionFilter {
 
  private:
   bool box_ = true;
+  bool tent_ = false;                 // max(0, 1 − |x|/radius), Mitsuba 3
   float radius_ = 0.5f;
   float alpha_ = 0.0f, bias_ = 0.0f;  // gaussian: max(0, exp(alpha x²) − bias), Mitsuba 3
 };

@@ -39,17 +39,22 @@ struct Entry {
 
 struct LightSampler::Impl {
   const Scene& scene;
+  const std::vector<Emitter>& emitters;  // scene.emitters, or a same-indexed replacement
   std::vector<Entry> entries;
   Distribution1D select;
   std::vector<int> meshEntry, sphereEntry;  // shape → entry (area emitters), −1
   std::vector<int> infinite;                // entries of constant/envmap emitters
 
-  explicit Impl(const Scene& s) : scene(s) {}
+  Impl(const Scene& s, const std::vector<Emitter>& em) : scene(s), emitters(em) {}
 
   float selectProb(int e) const { return static_cast<float>(select.probability(static_cast<size_t>(e))); }
 };
 
-LightSampler::LightSampler(const Scene& scene) : impl_(std::make_unique<Impl>(scene)) {
+LightSampler::LightSampler(const Scene& scene) : LightSampler(scene, scene.emitters) {}
+
+LightSampler::LightSampler(const Scene& scene, const std::vector<Emitter>& emitters)
+    : impl_(std::make_unique<Impl>(scene, emitters)) {
+  if (emitters.size() != scene.emitters.size()) throw Error("light sampler: emitter list does not match the scene");
   Impl& im = *impl_;
   im.meshEntry.assign(scene.meshes.size(), -1);
   im.sphereEntry.assign(scene.spheres.size(), -1);
@@ -59,7 +64,7 @@ LightSampler::LightSampler(const Scene& scene) : impl_(std::make_unique<Impl>(sc
   for (const Mesh& m : scene.meshes)
     for (const Vec3& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
   for (const Sphere& s : scene.spheres) lo = glm::min(lo, s.center - s.radius), hi = glm::max(hi, s.center + s.radius);
-  for (const Emitter& e : scene.emitters)
+  for (const Emitter& e : emitters)
     if (e.type == EmitterType::Point) lo = glm::min(lo, e.position), hi = glm::max(hi, e.position);
   const double sceneRadius = lo.x <= hi.x ? std::max(1e-6, 0.5 * static_cast<double>(glm::length(hi - lo))) : 1.0;
   const double discArea = kPiD * sceneRadius * sceneRadius;
@@ -75,7 +80,7 @@ LightSampler::LightSampler(const Scene& scene) : impl_(std::make_unique<Impl>(sc
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
     if (mesh.emitter < 0 || mesh.triangles.empty()) continue;
-    if (mesh.emitter >= static_cast<int>(scene.emitters.size())) throw Error("mesh '" + mesh.name + "': bad emitter index");
+    if (mesh.emitter >= static_cast<int>(emitters.size())) throw Error("mesh '" + mesh.name + "': bad emitter index");
     Entry e;
     e.type = EmitterType::Area;
     e.emitter = mesh.emitter;
@@ -95,13 +100,13 @@ LightSampler::LightSampler(const Scene& scene) : impl_(std::make_unique<Impl>(sc
       for (int k = 0; k < 3; ++k) lo = glm::min(lo, mesh.positions[tri[k]]), hi = glm::max(hi, mesh.positions[tri[k]]);
     e.boundCenter = 0.5f * (lo + hi);
     e.boundRadius = 0.5f * glm::length(hi - lo);
-    const double p = kPiD * e.area * luminance(scene.emitters[mesh.emitter].radiance);
+    const double p = kPiD * e.area * luminance(emitters[mesh.emitter].radiance);
     im.meshEntry[m] = addEntry(std::move(e), p);
   }
   for (size_t s = 0; s < scene.spheres.size(); ++s) {
     const Sphere& sp = scene.spheres[s];
     if (sp.emitter < 0) continue;
-    if (sp.emitter >= static_cast<int>(scene.emitters.size())) throw Error("sphere '" + sp.name + "': bad emitter index");
+    if (sp.emitter >= static_cast<int>(emitters.size())) throw Error("sphere '" + sp.name + "': bad emitter index");
     Entry e;
     e.type = EmitterType::Area;
     e.emitter = sp.emitter;
@@ -109,11 +114,11 @@ LightSampler::LightSampler(const Scene& scene) : impl_(std::make_unique<Impl>(sc
     e.boundCenter = sp.center;
     e.boundRadius = sp.radius;
     const double area = 4.0 * kPiD * sp.radius * sp.radius;
-    im.sphereEntry[s] = addEntry(std::move(e), kPiD * area * luminance(scene.emitters[sp.emitter].radiance));
+    im.sphereEntry[s] = addEntry(std::move(e), kPiD * area * luminance(emitters[sp.emitter].radiance));
   }
 
-  for (size_t i = 0; i < scene.emitters.size(); ++i) {
-    const Emitter& em = scene.emitters[i];
+  for (size_t i = 0; i < emitters.size(); ++i) {
+    const Emitter& em = emitters[i];
     Entry e;
     e.type = em.type;
     e.emitter = static_cast<int>(i);
@@ -163,6 +168,7 @@ float LightSampler::solidAngleBound(const Vec3& p) const {
   return total;
 }
 
+const std::vector<Emitter>& LightSampler::emitters() const { return impl_->emitters; }
 bool LightSampler::empty() const { return impl_->entries.empty(); }
 size_t LightSampler::emitterCount() const { return impl_->entries.size(); }
 bool LightSampler::hasEnvironment() const { return !impl_->infinite.empty(); }
@@ -174,7 +180,7 @@ std::optional<LightSample> LightSampler::sample(const Vec3& p, Vec2 u, float uLi
   const float pSel = im.selectProb(k);
   if (!(pSel > 0.0f)) return std::nullopt;
   const Entry& e = im.entries[k];
-  const Emitter& em = im.scene.emitters[e.emitter];
+  const Emitter& em = im.emitters[e.emitter];
   LightSample ls;
 
   // Area light at point q with normal n and area pdf pArea → solid angle at p.
@@ -306,7 +312,7 @@ Color LightSampler::environment(const Vec3& dir) const {
   Color L(0.0f);
   for (int k : im.infinite) {
     const Entry& e = im.entries[k];
-    if (e.type == EmitterType::Constant) L += im.scene.emitters[e.emitter].radiance;
+    if (e.type == EmitterType::Constant) L += im.emitters[e.emitter].radiance;
     else L += e.envmap->eval(dir);
   }
   return L;

@@ -26,6 +26,10 @@ struct LightSample {
 class LightSampler {
  public:
   explicit LightSampler(const Scene& scene);
+  // The scene's shapes with `emitters` (same count and order as scene.emitters, outliving the
+  // sampler) in place of its emitters: a sampler for a part of the scene's light (rcache's
+  // residual environment, cache/light_split.h).
+  LightSampler(const Scene& scene, const std::vector<Emitter>& emitters);
   ~LightSampler();
   LightSampler(const LightSampler&) = delete;
   LightSampler& operator=(const LightSampler&) = delete;
@@ -47,6 +51,8 @@ class LightSampler {
   // strategy of MIS where the lights are small: there light sampling alone is nearly optimal.
   float solidAngleBound(const Vec3& p) const;
 
+  // The emitters this sampler samples (the scene's, or the replacement it was built with).
+  const std::vector<Emitter>& emitters() const;
   bool empty() const;
   size_t emitterCount() const;
 

@@ -41,6 +41,8 @@ Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings,
     const Bsdf& bsdf = *scene.bsdfs[hit.bsdf];
     const Frame frame = hit.frame();
     const Vec3 wo = frame.toLocal(-ray.d);
+    // A textured factor scales everything this vertex reflects (Bsdf::tint), not its emission.
+    if (bsdf.tinted()) throughput *= bsdf.tint(hit.uv, wo);
 
     L += throughput * lightStrategyMis(ctx, hit, frame, wo, bsdf, rng, 1);
 

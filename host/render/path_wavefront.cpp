@@ -99,6 +99,8 @@ void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& setti
       const Bsdf& bsdf = *scene.bsdfs[hit.bsdf];
       const Frame frame = hit.frame();
       const Vec3 wo = frame.toLocal(-ray.d);
+      // A textured factor scales everything this vertex reflects (Bsdf::tint), not its emission.
+      if (bsdf.tinted()) throughput *= bsdf.tint(hit.uv, wo);
       Rng& rng = rngs[i];
 
       // Light sampling: its shadow ray joins the bounce's occlusion query; the value is added after.

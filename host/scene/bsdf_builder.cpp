@@ -1,5 +1,7 @@
-// <bsdf>: properties and nested BSDFs (or refs) handed to the BSDF factory (host/bsdf).
+// <bsdf>: properties, nested BSDFs (or refs) and textured parameters handed to the BSDF factory
+// (host/bsdf); a texture that scales the whole BSDF wraps it (bsdf/textured.h).
 #include "bsdf/bsdf_factory.h"
+#include "bsdf/textured.h"
 #include "scene/loader.h"
 
 namespace rc {
@@ -17,12 +19,23 @@ BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_
     e.props.set("filename", resolved);
   }
   std::vector<BsdfPtr> nested;
+  // Textured parameters: <texture name="p"> or <ref name="p" id="a texture"/>; null = a texture
+  // lenient mode left out.
+  std::vector<std::pair<pugi::xml_node, TexturePtr>> textures;
   for (const pugi::xml_node& child : e.children) {
     const std::string tag = child.name();
     if (tag == "bsdf") {
       nested.push_back(buildBsdf(file, child));
+    } else if (tag == "texture") {
+      if (std::string(child.attribute("name").value()).empty())
+        throw LocatedError(whereOf(*file, child) + ": a <texture> inside a <bsdf> needs the parameter's 'name'");
+      textures.emplace_back(child, buildTexture(file, child));
     } else if (tag == "ref") {
       const Named& n = resolveRef(file, child);
+      if (n.kind == Kind::Texture && !std::string(child.attribute("name").value()).empty()) {
+        textures.emplace_back(child, n.texture);
+        continue;
+      }
       if (n.kind != Kind::Bsdf || !n.bsdf)
         throw LocatedError(whereOf(*file, child) + ": id '" + std::string(child.attribute("id").value()) +
                            "' (defined at " + n.where + ") is not a bsdf");
@@ -40,9 +53,35 @@ BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_
     registerId(e, Kind::Bsdf, bsdf);
     return bsdf;
   }
+  TexturePtr factor;
+  for (const auto& [child, texture] : textures) {
+    const std::string name = child.attribute("name").value();
+    if (e.props.has(name) || (factor && isBsdfFactorParameter(e.type, name)))
+      throw LocatedError(whereOf(*file, child) + ": parameter '" + name + "' is given more than once");
+    Property p;
+    p.line = file->lineOf(child);
+    p.type = Property::Type::Rgb;
+    p.vec = Color(1.0f);
+    if (texture && isBsdfFactorParameter(e.type, name)) {
+      factor = texture;  // the BSDF is built with this parameter 1 and scaled per point
+    } else {
+      if (texture)
+        unsupported(whereOf(*file, child) + ": a texture on parameter '" + name + "' of <bsdf type=\"" + e.type +
+                    "\"> is not supported (textures scale diffuse 'reflectance' and conductor "
+                    "'specular_reflectance'); lenient: its mean value");
+      const Color mean = texture ? texture->mean() : Color(0.5f);
+      p.vec = mean;
+      if (mean.r == mean.g && mean.g == mean.b) {  // grey: also valid for float parameters
+        p.type = Property::Type::Float;
+        p.number = mean.r;
+      }
+    }
+    e.props.set(name, p);
+  }
   bsdf = e.located([&] { return createBsdf(e.props, nested, e.id); });
   if (!bsdf) e.fail("the BSDF factory returned nothing");
   checkUnused(e);
+  if (factor) bsdf = makeTexturedBsdf(bsdf, factor);
   registerId(e, Kind::Bsdf, bsdf);
   return bsdf;
 }

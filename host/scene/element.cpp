@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
+#include "scene/spectrum_rgb.h"
 #include "scene/transform_parser.h"
 #include "scene/value_parsing.h"
 
@@ -50,7 +52,7 @@ float toFloat(double v) {
 Vec3 toVec3(const std::vector<double>& v) { return Vec3(toFloat(v[0]), toFloat(v[1]), toFloat(v[2])); }
 
 // Parses one property element into `p` (and its text form into `raw`).
-void parseProperty(const pugi::xml_node& node, const std::string& tag, Property& p, std::string& raw) {
+void parseProperty(const pugi::xml_node& node, const std::string& tag, bool emitter, Property& p, std::string& raw) {
   const pugi::xml_attribute value = node.attribute("value");
   auto allow = [&](std::initializer_list<const char*> names) {
     for (const pugi::xml_attribute& a : node.attributes()) {
@@ -105,13 +107,31 @@ void parseProperty(const pugi::xml_node& node, const std::string& tag, Property&
     else if (v.size() == 3) p.vec = toVec3(v);
     else throw Error("rgb needs 1 or 3 numbers, got " + std::to_string(v.size()));
   } else if (tag == "spectrum") {
-    // Only a constant spectrum maps to RGB without a colour-matching step; wavelength:value
-    // lists would need one, so they are rejected rather than approximated.
-    if (raw.find(':') != std::string::npos) throw Error("only constant spectra are supported (one value)");
-    const std::vector<double> v = parseNumberList(raw);
-    if (v.size() != 1) throw Error("only constant spectra are supported (one value)");
+    // As Mitsuba's RGB variants (spectrum_rgb.h): wavelength:value pairs are projected to sRGB
+    // (reflectances bounded and under D65, emitters neither, η/k unbounded); a single value is
+    // grey, except on an emitter, where Mitsuba gives it the sRGB colour of a flat spectrum.
     p.type = Property::Type::Rgb;
-    p.vec = Vec3(toFloat(v[0]));
+    if (raw.find(':') == std::string::npos) {
+      const std::vector<double> v = parseNumberList(raw);
+      if (v.size() != 1) throw Error("a spectrum is one value or wavelength:value pairs");
+      p.vec = emitter ? uniformEmitterSpectrumRgb(toFloat(v[0])) : Vec3(toFloat(v[0]));
+      return;
+    }
+    std::vector<double> wavelengths, values;
+    std::string pairs = raw;
+    for (char& c : pairs)
+      if (c == ',') c = ' ';
+    std::istringstream in(pairs);
+    for (std::string token; in >> token;) {
+      const size_t colon = token.find(':');
+      if (colon == std::string::npos || colon == 0 || colon + 1 == token.size())
+        throw Error("spectrum entry '" + token + "' is not wavelength:value");
+      wavelengths.push_back(parseNumber(token.substr(0, colon)));
+      values.push_back(parseNumber(token.substr(colon + 1)));
+    }
+    const std::string name = node.attribute("name").value();
+    const bool unbounded = name == "eta" || name == "k";
+    p.vec = spectrumToRgb(wavelengths, values, !(emitter || unbounded), !emitter);
   }
 }
 
@@ -147,7 +167,7 @@ Element parseElement(const std::shared_ptr<XmlFile>& file, const pugi::xml_node&
       p.line = file->lineOf(child);
       std::string raw;
       try {
-        parseProperty(child, tag, p, raw);
+        parseProperty(child, tag, e.tag == "emitter", p, raw);
       } catch (const LocatedError&) {
         throw;
       } catch (const Error& err) {

@@ -72,7 +72,8 @@ void Loader::buildEmitter(const std::shared_ptr<XmlFile>& file, const pugi::xml_
     return;
   }
   checkUnused(e);
-  registerId(e, Kind::Emitter);
+  // A shared top-level area emitter is built once per shape referring to it; its id is registered once.
+  if (!(inShape && areaEmitter(e.id) && ids_.count(e.id))) registerId(e, Kind::Emitter);
   const int index = static_cast<int>(scene_.emitters.size());
   scene_.emitters.push_back(std::move(em));
   if (shapeMesh >= 0) scene_.meshes[shapeMesh].emitter = index;

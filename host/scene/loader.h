@@ -10,6 +10,7 @@
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
 #include "scene/xml_file.h"
+#include "texture/texture.h"
 
 namespace rc {
 
@@ -25,7 +26,8 @@ class Loader {
   void checkUnused(const Element& e);
   // Unexpected nested element: always an error (a misplaced element is a structural mistake).
   [[noreturn]] void unexpectedChild(const Element& parent, const pugi::xml_node& child);
-  // Resolves a file name written in `e` relative to its XML file (then the main scene's folder).
+  // Resolves a file name written in `e` relative to its XML file, then the <path> folders, then the
+  // main scene's folder.
   std::string resolvePath(const Element& e, const std::string& filename) const;
   std::string anonymousName(const std::string& type);  // "<type>#<n>"
 
@@ -34,19 +36,24 @@ class Loader {
   struct Named {
     Kind kind = Kind::Other;
     BsdfPtr bsdf;
+    TexturePtr texture;
     std::string where;
   };
-  void registerId(const Element& e, Kind kind, BsdfPtr bsdf = nullptr);
+  void registerId(const Element& e, Kind kind, BsdfPtr bsdf = nullptr, TexturePtr texture = nullptr);
   const Named& resolveRef(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref);
 
   BsdfPtr buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
   BsdfPtr defaultBsdf();
+  TexturePtr buildTexture(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
   int bsdfIndex(const BsdfPtr& bsdf);  // index into scene_.bsdfs, adding it on first use
   void buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
   // Top-level emitters (shapeMesh = shapeSphere = -1) and area emitters of a shape.
   void buildEmitter(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node, int shapeMesh, int shapeSphere);
   void buildSensor(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
   void buildIntegrator(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
+
+  // The top-level area emitter `id` names, or null.
+  const std::pair<std::shared_ptr<XmlFile>, pugi::xml_node>* areaEmitter(const std::string& id) const;
 
   const LoadOptions& options() const { return options_; }
   Scene& scene() { return scene_; }
@@ -62,7 +69,11 @@ class Loader {
   std::vector<std::string> includeStack_;      // canonical paths of the files being read
   std::vector<std::shared_ptr<XmlFile>> files_;
   std::string mainDir_;
+  std::vector<std::string> searchPaths_;       // <path value> folders, the latest first
   std::map<std::string, Named> ids_;
+  // Top-level <emitter type="area" id> of each file read: Mitsuba attaches them to the shapes that
+  // <ref> them, also from before their definition.
+  std::map<std::string, std::pair<std::shared_ptr<XmlFile>, pugi::xml_node>> areaEmitters_;
   std::map<const Bsdf*, int> bsdfIndices_;
   BsdfPtr defaultBsdf_;
   std::map<std::string, int> anonymousCount_;

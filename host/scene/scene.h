@@ -55,15 +55,19 @@ struct Emitter {
 
 struct Camera {
   Mat4 toWorld{1.0f};          // camera looks down local +z, up is local +y, Mitsuba convention
+  // Defaults of a camera built in code; a <sensor> without `fov` gets Mitsuba's 50 mm lens from
+  // the loader instead (46.79° on the image diagonal).
   float fovDegrees = 39.3077f; // along fovAxis
   std::string fovAxis = "x";   // x, y, diagonal, smaller, larger
+  Vec2 principalPointOffset{0.0f};   // added to the film position, in fractions of the film size
   float nearClip = 1e-2f, farClip = 1e4f;
 };
 
 struct FilmSettings {
   int width = 768, height = 576;
-  std::string filter = "gaussian";  // box | gaussian
+  std::string filter = "gaussian";  // box | tent | gaussian
   float gaussianStddev = 0.5f;
+  float tentRadius = 1.0f;
 };
 
 // Integrator block; `params` keeps every parameter of <integrator> (and -D overrides are already

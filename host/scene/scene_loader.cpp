@@ -57,6 +57,9 @@ void Loader::processFile(const std::shared_ptr<XmlFile>& file, const std::string
 
   // Substitution runs in document order so a <default> applies to what follows it, as in Mitsuba.
   for (pugi::xml_node child : root.children()) substituteTree(file, child, true);
+  for (const pugi::xml_node& child : root.children("emitter"))
+    if (std::string(child.attribute("type").value()) == "area" && child.attribute("id"))
+      areaEmitters_.emplace(child.attribute("id").value(), std::make_pair(file, child));
   for (const pugi::xml_node& child : root.children())
     if (child.type() == pugi::node_element) sceneChild(file, child);
 }
@@ -87,6 +90,26 @@ void Loader::substituteTree(const std::shared_ptr<XmlFile>& file, pugi::xml_node
 void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
   const std::string tag = node.name();
   if (tag == "default") return;  // handled during substitution
+  if (tag == "path") {
+    // Mitsuba's <path value>: a folder prepended to the file resolver's search list; relative to
+    // this file's folder first, then to the folders already listed.
+    const pugi::xml_attribute value = node.attribute("value");
+    if (!value || std::string(value.value()).empty()) throw LocatedError(whereOf(*file, node) + ": missing attribute 'value'");
+    for (const pugi::xml_attribute& a : node.attributes())
+      if (std::string(a.name()) != "value")
+        throw LocatedError(whereOf(*file, node) + ": unsupported attribute '" + a.name() + "'");
+    fs::path folder = value.value();
+    if (folder.is_relative()) {
+      fs::path found = (fs::path(file->path()).parent_path() / folder).lexically_normal();
+      for (auto it = searchPaths_.begin(); !fs::is_directory(found) && it != searchPaths_.end(); ++it)
+        found = (fs::path(*it) / folder).lexically_normal();
+      folder = found;
+    }
+    if (!fs::is_directory(folder))
+      throw LocatedError(whereOf(*file, node) + ": folder '" + folder.string() + "' not found");
+    searchPaths_.insert(searchPaths_.begin(), folder.string());
+    return;
+  }
   if (tag == "include") {
     const pugi::xml_attribute fn = node.attribute("filename");
     if (!fn) throw LocatedError(whereOf(*file, node) + ": missing attribute 'filename'");
@@ -119,16 +142,15 @@ void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   } else if (tag == "shape") {
     buildShape(file, node);
   } else if (tag == "emitter") {
+    if (areaEmitter(node.attribute("id").value()) && std::string(node.attribute("type").value()) == "area")
+      return;  // built by the shapes that refer to it
     buildEmitter(file, node, -1, -1);
   } else if (tag == "sensor") {
     buildSensor(file, node);
   } else if (tag == "integrator") {
     buildIntegrator(file, node);
   } else if (tag == "texture") {
-    // BSDF parameters are constants here (no texture lookups), so no texture plugin exists.
-    Element e = parseElement(file, node);
-    unsupported(e.where() + ": unknown plugin '" + e.type + "' (textures are not supported)");
-    if (!e.id.empty()) registerId(e, Kind::Texture);
+    buildTexture(file, node);  // registers its id for <ref name="..." id="..."/> in BSDFs
   } else if (tag == "film" || tag == "sampler" || tag == "rfilter") {
     throw LocatedError(whereOf(*file, node) + ": <" + tag + "> must be inside " +
                        (tag == "rfilter" ? "<film>" : "<sensor>"));
@@ -159,23 +181,33 @@ std::string Loader::resolvePath(const Element& e, const std::string& filename) c
   if (p.is_absolute()) return p.string();
   const fs::path local = (fs::path(e.file->path()).parent_path() / p).lexically_normal();
   if (fs::exists(local)) return local.string();
+  for (const std::string& folder : searchPaths_) {  // <path> folders, the latest first
+    const fs::path candidate = (fs::path(folder) / p).lexically_normal();
+    if (fs::exists(candidate)) return candidate.string();
+  }
   // Mitsuba resolves against the main scene's folder; accept that too for included files.
   const fs::path main = (fs::path(mainDir_) / p).lexically_normal();
   if (fs::exists(main)) return main.string();
   return local.string();  // the caller reports it missing under the name users expect
 }
 
+const std::pair<std::shared_ptr<XmlFile>, pugi::xml_node>* Loader::areaEmitter(const std::string& id) const {
+  auto it = areaEmitters_.find(id);
+  return it == areaEmitters_.end() ? nullptr : &it->second;
+}
+
 std::string Loader::anonymousName(const std::string& type) {
   return type + "#" + std::to_string(anonymousCount_[type]++);
 }
 
-void Loader::registerId(const Element& e, Kind kind, BsdfPtr bsdf) {
+void Loader::registerId(const Element& e, Kind kind, BsdfPtr bsdf, TexturePtr texture) {
   if (e.id.empty()) return;
   auto it = ids_.find(e.id);
   if (it != ids_.end()) e.fail("duplicate id '" + e.id + "' (first defined at " + it->second.where + ")");
   Named n;
   n.kind = kind;
   n.bsdf = std::move(bsdf);
+  n.texture = std::move(texture);
   n.where = e.file->location(e.node);
   ids_[e.id] = n;
 }

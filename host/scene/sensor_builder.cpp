@@ -1,5 +1,6 @@
 // <sensor type="perspective"> with its <film type="hdrfilm"> (and <rfilter>) and <sampler type="independent">.
 #include <cmath>
+#include <cstdlib>
 
 #include "scene/loader.h"
 
@@ -9,14 +10,20 @@ namespace {
 
 void buildRfilter(Loader& loader, const Element& e, FilmSettings& film) {
   for (const pugi::xml_node& child : e.children) loader.unexpectedChild(e, child);
+  // Mitsuba 3's filters: box (radius 0.5), tent (radius, default 1), gaussian (stddev, default 0.5,
+  // radius 4·stddev).
   if (e.type == "box") {
     film.filter = "box";
+  } else if (e.type == "tent") {
+    film.filter = "tent";
+    film.tentRadius = e.located([&] { return e.props.getFloat("radius", 1.0f); });
+    if (!(film.tentRadius > 0.0f && film.tentRadius <= 64.0f)) e.failParam("radius", "'radius' must be in (0, 64] pixels");
   } else if (e.type == "gaussian") {
     film.filter = "gaussian";
     film.gaussianStddev = e.located([&] { return e.props.getFloat("stddev", 0.5f); });
     if (!(film.gaussianStddev > 0.0f)) e.failParam("stddev", "'stddev' must be positive");
   } else {
-    loader.unsupported(e.where() + ": unknown plugin '" + e.type + "'");
+    loader.unsupported(e.where() + ": unknown plugin '" + e.type + "' (known: box, tent, gaussian)");
     return;
   }
   loader.checkUnused(e);
@@ -34,9 +41,21 @@ void buildFilm(Loader& loader, const Element& e, FilmSettings& film) {
   if (film.width <= 0 || film.width > 16384) e.failParam("width", "'width' must be in 1..16384, got " + std::to_string(film.width));
   if (film.height <= 0 || film.height > 16384) e.failParam("height", "'height' must be in 1..16384, got " + std::to_string(film.height));
   if (pixels > (1ll << 26)) e.fail("film of " + std::to_string(pixels) + " pixels exceeds the limit of 2^26");
-  // Output format is decided by the -o file; accept Mitsuba's format strings so scenes stay portable.
-  e.located([&] { return e.props.getString("pixel_format", "rgb"); });
-  e.located([&] { return e.props.getString("component_format", "float16"); });
+  // Output format is decided by the -o file; Mitsuba's format strings are validated as Mitsuba does
+  // and otherwise have no effect, so scenes stay portable.
+  auto oneOf = [&](const char* name, const char* fallback, std::initializer_list<const char*> allowed) {
+    const std::string v = e.located([&] { return e.props.getString(name, fallback); });
+    std::string list;
+    for (const char* a : allowed) {
+      if (v == a) return;
+      list += std::string(list.empty() ? "" : ", ") + a;
+    }
+    e.failParam(name, std::string("'") + name + "' must be one of " + list + ", got '" + v + "'");
+  };
+  oneOf("file_format", "openexr", {"openexr", "exr", "rgbe", "pfm"});
+  oneOf("pixel_format", "rgb", {"rgb", "rgba", "luminance", "luminance_alpha", "xyz", "xyza"});
+  oneOf("component_format", "float16", {"float16", "float32", "uint32"});
+  e.located([&] { return e.props.getBool("banner", false); });  // Mitsuba 3 draws no banner
   for (const pugi::xml_node& child : e.children) {
     if (std::string(child.name()) != "rfilter") loader.unexpectedChild(e, child);
     buildRfilter(loader, parseElement(e.file, child), film);
@@ -84,13 +103,40 @@ void Loader::buildSensor(const std::shared_ptr<XmlFile>& file, const pugi::xml_n
     return;
   }
   Camera& cam = scene_.camera;
-  cam.fovDegrees = e.located([&] { return e.props.getFloat("fov", 39.3077f); });
-  if (!(cam.fovDegrees > 0.0f && cam.fovDegrees < 180.0f))
-    e.failParam("fov", "'fov' must be in (0, 180) degrees, got " + std::to_string(cam.fovDegrees));
-  cam.fovAxis = e.located([&] { return e.props.getString("fov_axis", "x"); });
-  if (cam.fovAxis != "x" && cam.fovAxis != "y" && cam.fovAxis != "diagonal" && cam.fovAxis != "smaller" &&
-      cam.fovAxis != "larger")
-    e.failParam("fov_axis", "'fov_axis' must be x, y, diagonal, smaller or larger, got '" + cam.fovAxis + "'");
+  // Mitsuba's parse_fov: either `fov` along `fov_axis`, or a `focal_length` ("<x>mm", default 50mm)
+  // of a 36×24 mm frame, which fixes the fov on the frame diagonal.
+  if (e.props.has("fov") && e.props.has("focal_length"))
+    e.failParam("focal_length", "give either 'fov' or 'focal_length', not both");
+  if (e.props.has("fov")) {
+    cam.fovDegrees = e.located([&] { return e.props.getFloat("fov", 0.0f); });
+    if (!(cam.fovDegrees > 0.0f && cam.fovDegrees < 180.0f))
+      e.failParam("fov", "'fov' must be in (0, 180) degrees, got " + std::to_string(cam.fovDegrees));
+    cam.fovAxis = e.located([&] { return e.props.getString("fov_axis", "x"); });
+    if (cam.fovAxis != "x" && cam.fovAxis != "y" && cam.fovAxis != "diagonal" && cam.fovAxis != "smaller" &&
+        cam.fovAxis != "larger")
+      e.failParam("fov_axis", "'fov_axis' must be x, y, diagonal, smaller or larger, got '" + cam.fovAxis + "'");
+  } else {
+    std::string focal = e.located([&] { return e.props.getString("focal_length", "50mm"); });
+    if (focal.size() > 2 && focal.compare(focal.size() - 2, 2, "mm") == 0) focal.resize(focal.size() - 2);
+    char* end = nullptr;
+    const double mm = std::strtod(focal.c_str(), &end);
+    if (focal.empty() || *end != '\0' || !(mm > 0.0) || !std::isfinite(mm))
+      e.failParam("focal_length", "'focal_length' must be a positive length like \"50mm\"");
+    cam.fovDegrees = static_cast<float>(2.0 * std::atan(std::sqrt(36.0 * 36.0 + 24.0 * 24.0) / (2.0 * mm)) * 180.0 / kPiD);
+    cam.fovAxis = "diagonal";
+    e.located([&] { return e.props.getString("fov_axis", "x"); });  // Mitsuba does not read it here
+  }
+  // Read and without effect, as in Mitsuba's perspective sensor: a pinhole has no focus, and a
+  // static scene does not depend on the shutter interval.
+  e.located([&] { return e.props.getFloat("focus_distance", 0.0f); });
+  e.located([&] { return e.props.getFloat("shutter_open", 0.0f); });
+  e.located([&] { return e.props.getFloat("shutter_close", 0.0f); });
+  // Principal point offset, in fractions of the film size (Mitsuba adds it to the film sample).
+  cam.principalPointOffset = e.located([&] {
+    return Vec2(e.props.getFloat("principal_point_offset_x", 0.0f), e.props.getFloat("principal_point_offset_y", 0.0f));
+  });
+  if (std::fabs(cam.principalPointOffset.x) > 1e3f || std::fabs(cam.principalPointOffset.y) > 1e3f)
+    e.fail("'principal_point_offset_x/y' beyond ±1000 film sizes");
   cam.nearClip = e.located([&] { return e.props.getFloat("near_clip", 1e-2f); });
   cam.farClip = e.located([&] { return e.props.getFloat("far_clip", 1e4f); });
   if (!(cam.nearClip > 0.0f)) e.failParam("near_clip", "'near_clip' must be positive");

@@ -1,10 +1,11 @@
-// <shape>: obj, ply, rectangle, cube, disk as world-space meshes; sphere as an analytic Sphere.
+// <shape>: obj, ply, serialized, rectangle, cube, disk as world-space meshes; sphere as an analytic Sphere.
 #include <cmath>
 
 #include "scene/loader.h"
 #include "scene/mesh_builder.h"
 #include "scene/obj_loader.h"
 #include "scene/ply_loader.h"
+#include "scene/serialized_loader.h"
 
 namespace rc {
 
@@ -31,7 +32,7 @@ bool similarity(const Mat4& m, float& scale) {
 
 void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
   const Element e = parseElement(file, node);
-  static const char* kTypes[] = {"obj", "ply", "rectangle", "cube", "disk", "sphere"};
+  static const char* kTypes[] = {"obj", "ply", "serialized", "rectangle", "cube", "disk", "sphere"};
   bool known = false;
   for (const char* t : kTypes) known = known || e.type == t;
   if (e.type.empty()) e.fail("missing attribute 'type'");
@@ -43,9 +44,15 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   // Nested material and emitter (the emitter is built once the shape has its index).
   BsdfPtr bsdf;
   pugi::xml_node emitterNode;
+  std::shared_ptr<XmlFile> emitterFile = file;
   for (const pugi::xml_node& child : e.children) {
     const std::string tag = child.name();
-    if (tag == "bsdf" || tag == "ref") {
+    const auto* sharedEmitter = tag == "ref" ? areaEmitter(child.attribute("id").value()) : nullptr;
+    if (sharedEmitter) {
+      if (emitterNode) throw LocatedError(whereOf(*file, child) + ": a shape takes one emitter, this is the second");
+      emitterFile = sharedEmitter->first;
+      emitterNode = sharedEmitter->second;
+    } else if (tag == "bsdf" || tag == "ref") {
       if (bsdf) throw LocatedError(whereOf(*file, child) + ": a shape takes one bsdf, this is the second");
       if (tag == "bsdf") {
         bsdf = buildBsdf(file, child);
@@ -59,6 +66,7 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     } else if (tag == "emitter") {
       if (emitterNode) throw LocatedError(whereOf(*file, child) + ": a shape takes one emitter, this is the second");
       emitterNode = child;
+      emitterFile = file;
     } else {
       unexpectedChild(e, child);
     }
@@ -91,15 +99,20 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     MeshData data;
     MeshPolicy policy;
     policy.flipNormals = flip;
-    if (e.type == "obj" || e.type == "ply" || e.type == "cube")
+    const bool fromFile = e.type == "obj" || e.type == "ply" || e.type == "serialized";
+    if (fromFile || e.type == "cube")
       policy.faceNormals = e.located([&] { return e.props.getBool("face_normals", false); });
-    if (e.type == "obj" || e.type == "ply") {
+    if (fromFile) {
       const std::string fn = e.located([&] { return e.props.getString("filename", ""); });
       if (fn.empty()) e.fail("missing parameter 'filename'");
       const std::string path = resolvePath(e, fn);
       if (e.type == "obj") {
         const bool flipUv = e.located([&] { return e.props.getBool("flip_tex_coords", true); });
         data = e.located([&] { return loadObj(path, flipUv); });
+      } else if (e.type == "serialized") {
+        const int index = e.located([&] { return e.props.getInt("shape_index", 0); });
+        if (index < 0) e.failParam("shape_index", "'shape_index' must be non-negative");
+        data = e.located([&] { return loadSerialized(path, index); });
       } else {
         data = e.located([&] { return loadPly(path); });
       }
@@ -121,7 +134,7 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   }
   checkUnused(e);
   registerId(e, Kind::Shape);
-  if (emitterNode) buildEmitter(file, emitterNode, meshIndex, sphereIndex);
+  if (emitterNode) buildEmitter(emitterFile, emitterNode, meshIndex, sphereIndex);
 }
 
 }  // namespace rc

@@ -64,6 +64,17 @@ bool finite(const Mat4& m) {
 
 }  // namespace
 
+Mat4 rotationAboutAxis(const Vec3& a, float angle) {
+  // Rodrigues' matrix c·I + (1 − c)·a·aᵀ + s·[a]× with `a` as given, not normalised: Mitsuba 3
+  // (drjit's rotate) does the same, so a non-unit axis also scales, and scenes rely on that.
+  const float c = std::cos(angle), s = std::sin(angle), k = 1.0f - c;
+  Mat4 m(1.0f);  // m[col][row]
+  m[0] = Vec4(a.x * a.x * k + c, a.y * a.x * k + a.z * s, a.z * a.x * k - a.y * s, 0.0f);
+  m[1] = Vec4(a.x * a.y * k - a.z * s, a.y * a.y * k + c, a.z * a.y * k + a.x * s, 0.0f);
+  m[2] = Vec4(a.x * a.z * k + a.y * s, a.y * a.z * k - a.x * s, a.z * a.z * k + c, 0.0f);
+  return m;
+}
+
 Mat4 lookAt(const Vec3& origin, const Vec3& target, const Vec3& up) {
   const Vec3 dir = glm::normalize(target - origin);
   const Vec3 left = glm::normalize(glm::cross(up, dir));
@@ -95,17 +106,19 @@ Mat4 parseTransform(const pugi::xml_node& transform, const std::function<std::st
         s = op.xyz(1.0);
       t = glm::scale(Mat4(1.0f), s);
     } else if (tag == "rotate") {
-      op.onlyAttributes({"x", "y", "z", "axis", "angle"});
+      op.onlyAttributes({"x", "y", "z", "axis", "value", "angle"});
       Vec3 axis;
-      if (op.has("axis")) {
-        if (op.has("x") || op.has("y") || op.has("z")) op.fail("give either 'axis' or x/y/z, not both");
-        axis = op.vec3("axis");
+      if (op.has("axis") || op.has("value")) {
+        const char* name = op.has("axis") ? "axis" : "value";
+        if (op.has("x") || op.has("y") || op.has("z") || (op.has("axis") && op.has("value")))
+          op.fail(std::string("give either '") + name + "' or x/y/z, not both");
+        axis = op.vec3(name);
       } else {
         axis = Vec3(float(op.number("x", 0)), float(op.number("y", 0)), float(op.number("z", 0)));
       }
       if (!op.has("angle")) op.fail("missing attribute 'angle' (degrees)");
       if (glm::dot(axis, axis) == 0.0f) op.fail("rotation axis is zero");
-      t = glm::rotate(Mat4(1.0f), glm::radians(float(op.number("angle", 0))), glm::normalize(axis));
+      t = rotationAboutAxis(axis, glm::radians(float(op.number("angle", 0))));
     } else if (tag == "matrix") {
       op.onlyAttributes({"value"});
       if (!op.has("value")) op.fail("missing attribute 'value'");

@@ -204,6 +204,34 @@ TEST(ClosedForm, RoughPlasticDiffuseApproachesSmoothLimit) {
     }
 }
 
+// Thin sheet: R = 2r/(1 + r) with r the first face's Fresnel reflectance, T = 1 − R straight through.
+TEST(ClosedForm, ThinDielectricSumsInternalReflections) {
+  BsdfPtr sheet = make("thindielectric", {num("int_ior", 1.5)});
+  const float eta = 1.5f / 1.000277f;
+  for (const double cosTheta : {1.0, 0.6, 0.2}) {
+    const Vec3 wo = dirFrom(cosTheta, std::sqrt(1 - cosTheta * cosTheta));
+    const float r = fresnelDielectric(float(cosTheta), eta).r, R = 2 * r / (1 + r);
+    int reflected = 0;
+    const int n = 40000;
+    Rng rng(5);
+    for (int k = 0; k < n; ++k) {
+      const auto s = sheet->sample(k % 2 ? wo : -wo, rng.nextFloat(), Vec2(0.5f));  // both sides alike
+      ASSERT_TRUE(s.has_value());
+      EXPECT_NEAR(s->weight.r, 1.0f, 1e-6f);
+      EXPECT_EQ(s->eta, 1.0f);
+      const Vec3 w = k % 2 ? wo : -wo;
+      if (s->lobe & kLobeTransmission) {
+        EXPECT_NEAR(glm::length(s->wi + w), 0.0f, 1e-6f);  // straight through
+      } else {
+        ++reflected;
+        EXPECT_NEAR(s->wi.z, w.z, 1e-6f);
+      }
+    }
+    // Binomial: 4σ of the reflected fraction.
+    EXPECT_NEAR(double(reflected) / n, R, 4 * std::sqrt(R * (1 - R) / n) + 1e-4) << cosTheta;
+  }
+}
+
 TEST(ClosedForm, DielectricSamplesSnellAndFresnel) {
   BsdfPtr glass = make("dielectric");  // bk7 in air
   const float eta = 1.5046f / 1.000277f;

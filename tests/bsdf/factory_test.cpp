@@ -28,7 +28,7 @@ void expectError(const Properties& p, const std::vector<BsdfPtr>& nested, const 
 }
 
 TEST(BsdfFactory, KnownTypes) {
-  for (const char* t : {"diffuse", "roughconductor", "conductor", "plastic", "roughplastic", "dielectric", "twosided",
+  for (const char* t : {"diffuse", "roughconductor", "conductor", "plastic", "roughplastic", "dielectric", "thindielectric", "twosided",
                         "blendbsdf"})
     EXPECT_TRUE(isKnownBsdfType(t)) << t;
   EXPECT_FALSE(isKnownBsdfType("roughdielectric"));
@@ -63,8 +63,15 @@ TEST(BsdfFactory, RejectsBadParameters) {
   p.set("eta", floatProp(NAN));
   expectError(p, {}, "'eta'");
   p = props("conductor");
+  p.set("material", stringProp("Unobtainium"));
+  expectError(p, {}, "unknown conductor material 'Unobtainium'");
+  p = props("conductor");
   p.set("material", stringProp("Au"));
-  expectError(p, {}, "unsupported material");
+  p.set("eta", floatProp(1.5));
+  expectError(p, {}, "not both");
+  p = props("roughconductor");
+  p.set("k", floatProp(-1));
+  expectError(p, {}, "'k'");
   p = props("roughconductor");
   p.set("distribution", stringProp("phong"));
   expectError(p, {}, "'distribution'");
@@ -75,6 +82,26 @@ TEST(BsdfFactory, RejectsBadParameters) {
   expectError(props("blendbsdf"), {d}, "nested");
   expectError(props("twosided"), {}, "nested");
   expectError(props("diffuse"), {d}, "nested");
+}
+
+// Named conductors reflect at normal incidence what their RGB η, k give: ((η−1)² + k²)/((η+1)² + k²),
+// with Mitsuba 3.9.1's RGB values for gold (η = 0.143036, 0.375307, 1.44205; k = 3.983, 2.38556, 1.60336).
+TEST(BsdfFactory, ConductorMaterialPresets) {
+  Properties p = props("conductor");
+  p.set("material", stringProp("Au"));
+  const BsdfPtr gold = createBsdf(p, {});
+  const auto s = gold->sample(Vec3(0, 0, 1), 0.5f, Vec2(0.5f));
+  ASSERT_TRUE(s);
+  const float eta[3] = {0.143036f, 0.375307f, 1.44205f}, k[3] = {3.983f, 2.38556f, 1.60336f};
+  for (int c = 0; c < 3; ++c) {
+    const float expected = ((eta[c] - 1) * (eta[c] - 1) + k[c] * k[c]) / ((eta[c] + 1) * (eta[c] + 1) + k[c] * k[c]);
+    EXPECT_NEAR(s->weight[c], expected, 1e-4f) << c;
+  }
+  for (const char* name : {"Ag", "Al", "Cu", "Cr", "Cu_palik", "W"}) {
+    Properties q = props("roughconductor");
+    q.set("material", stringProp(name));
+    EXPECT_NO_THROW(createBsdf(q, {})) << name;
+  }
 }
 
 TEST(BsdfFactory, ParameterKeyDistinguishesValues) {

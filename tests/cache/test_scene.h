@@ -48,6 +48,22 @@ inline void addQuad(Scene& s, Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p3, int bsdf, int 
   s.meshes.push_back(m);
 }
 
+// The test scenes' camera and film: Mitsuba look-at from eye to target (+y up, local +z the view
+// direction), 45° fov, box filter, 1 spp, max_depth 3.
+inline void setTestCamera(Scene& s, Vec3 eye, Vec3 target, int width, int height) {
+  const Vec3 up(0, 1, 0);
+  const Vec3 dir = glm::normalize(target - eye);
+  const Vec3 left = glm::normalize(glm::cross(up, dir));
+  const Vec3 newUp = glm::cross(dir, left);
+  s.camera.toWorld = Mat4(Vec4(left, 0), Vec4(newUp, 0), Vec4(dir, 0), Vec4(eye, 1));
+  s.camera.fovDegrees = 45.0f;
+  s.film.width = width;
+  s.film.height = height;
+  s.film.filter = "box";
+  s.sampleCount = 1;
+  s.integrator.maxDepth = 3;
+}
+
 // Box [-1,1]×[0,2]×[-1,1] open toward +z where the camera stands; floor at y = 0.
 inline Scene boxScene(float floorAlpha, int width = 32, int height = 24) {
   Scene s;
@@ -67,18 +83,8 @@ inline Scene boxScene(float floorAlpha, int width = 32, int height = 24) {
   light.mesh = static_cast<int>(s.meshes.size());
   s.emitters.push_back(light);
   addQuad(s, {-0.3f, 1.98f, -0.3f}, {0.3f, 1.98f, -0.3f}, {0.3f, 1.98f, 0.3f}, {-0.3f, 1.98f, 0.3f}, 4, 0);  // light, −y
-  // Camera at z = 3.2 looking toward −z (Mitsuba look-at: local +z is the view direction).
-  const Vec3 eye(0, 1, 3.2f), target(0, 0.8f, 0), up(0, 1, 0);
-  const Vec3 dir = glm::normalize(target - eye);
-  const Vec3 left = glm::normalize(glm::cross(up, dir));
-  const Vec3 newUp = glm::cross(dir, left);
-  s.camera.toWorld = Mat4(Vec4(left, 0), Vec4(newUp, 0), Vec4(dir, 0), Vec4(eye, 1));
-  s.camera.fovDegrees = 45.0f;
-  s.film.width = width;
-  s.film.height = height;
-  s.film.filter = "box";
-  s.sampleCount = 1;
-  s.integrator.maxDepth = 3;
+  // Camera at z = 3.2 looking toward −z.
+  setTestCamera(s, Vec3(0, 1, 3.2f), Vec3(0, 0.8f, 0), width, height);
   return s;
 }
 

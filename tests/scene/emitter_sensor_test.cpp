@@ -150,7 +150,7 @@ TEST(SceneSensor, BadValuesAreErrors) {
   };
   bad("<float name=\"fov\" value=\"180\"/>", {"scene.xml:3:", "<sensor type=\"perspective\">", "'fov' must be in (0, 180)"});
   bad("<float name=\"fov\" value=\"0\"/>", {"'fov'"});
-  bad("<string name=\"fov_axis\" value=\"z\"/>", {"fov_axis"});
+  bad("<float name=\"fov\" value=\"30\"/><string name=\"fov_axis\" value=\"z\"/>", {"fov_axis"});
   bad("<float name=\"near_clip\" value=\"0\"/>", {"near_clip"});
   bad("<float name=\"near_clip\" value=\"10\"/><float name=\"far_clip\" value=\"1\"/>", {"far_clip"});
   bad("<transform name=\"to_world\"><scale value=\"2\"/></transform>", {"must not scale"});
@@ -159,14 +159,19 @@ TEST(SceneSensor, BadValuesAreErrors) {
   bad("<film type=\"hdrfilm\"><integer name=\"width\" value=\"20000\"/></film>", {"'width'"});
   bad("<film type=\"hdrfilm\"><integer name=\"width\" value=\"16384\"/><integer name=\"height\" value=\"16384\"/></film>", {"2^26"});
   bad("<film type=\"hdrfilm\"><rfilter type=\"gaussian\"><float name=\"stddev\" value=\"0\"/></rfilter></film>", {"stddev"});
-  bad("<film type=\"hdrfilm\"><rfilter type=\"tent\"/></film>", {"unknown plugin 'tent'"});
+  bad("<film type=\"hdrfilm\"><rfilter type=\"mitchell\"/></film>", {"unknown plugin 'mitchell'"});
+  bad("<film type=\"hdrfilm\"><rfilter type=\"tent\"><float name=\"radius\" value=\"0\"/></rfilter></film>", {"'radius'"});
+  bad("<film type=\"hdrfilm\"><string name=\"file_format\" value=\"png\"/></film>", {"'file_format' must be one of"});
+  bad("<film type=\"hdrfilm\"><string name=\"pixel_format\" value=\"rgbx\"/></film>", {"'pixel_format' must be one of"});
   bad("<film type=\"ldrfilm\"/>", {"unknown plugin 'ldrfilm'"});
   bad("<sampler type=\"independent\"><integer name=\"sample_count\" value=\"0\"/></sampler>", {"'sample_count' must be positive"});
   bad("<sampler type=\"independent\"><integer name=\"seed\" value=\"-1\"/></sampler>", {"'seed'"});
   bad("<sampler type=\"halton\"/>", {"unknown plugin 'halton'", "known: independent, ldsampler"});
   bad("<sampler type=\"ldsampler\"><integer name=\"sample_count\" value=\"-2\"/></sampler>", {"'sample_count' must be positive"});
   bad("<sampler type=\"ldsampler\"><float name=\"jitter\" value=\"1\"/></sampler>", {"unsupported parameter 'jitter'"});
-  bad("<float name=\"focal_length\" value=\"50\"/>", {"unsupported parameter 'focal_length'"});
+  bad("<float name=\"fov\" value=\"40\"/><string name=\"focal_length\" value=\"50mm\"/>", {"either 'fov' or 'focal_length'"});
+  bad("<string name=\"focal_length\" value=\"fifty\"/>", {"'focal_length' must be a positive length"});
+  bad("<float name=\"focal_length\" value=\"50\"/>", {"focal_length"});
   bad("<shape type=\"cube\"/>", {"unexpected <shape> inside <sensor>"});
   expectError([&] { loadText(dir, sceneXml("", "<sensor type=\"orthographic\"/>")); }, {"unknown plugin 'orthographic'"});
   expectError([&] { loadText(dir, sceneXml("<sensor type=\"perspective\"/>")); }, {"only one sensor"});
@@ -196,6 +201,20 @@ TEST(SceneIntegrator, Errors) {
   expectError([&] { loadText(dir, sceneXml("<integrator type=\"path\"/><integrator type=\"path\"/>")); }, {"only one <integrator>"});
   expectError([&] { loadText(dir, sceneXml("<integrator type=\"rcache\"><transform name=\"to_world\"/></integrator>")); },
               {"unsupported parameter 'to_world'"});
+}
+
+// Mitsuba attaches a top-level area emitter to every shape that refers to it, also before its
+// definition in the file.
+TEST(SceneEmitters, SharedAreaEmitterByReference) {
+  TempDir dir;
+  const Scene s = loadText(dir, sceneXml("<shape type=\"rectangle\"><ref id=\"glow\"/></shape>"
+                                         "<shape type=\"sphere\"><bsdf type=\"diffuse\"/><ref id=\"glow\"/></shape>"
+                                         "<emitter type=\"area\" id=\"glow\"><rgb name=\"radiance\" value=\"2\"/></emitter>"));
+  ASSERT_EQ(s.emitters.size(), 2u);
+  EXPECT_EQ(s.emitters[0].mesh, 0);
+  EXPECT_EQ(s.emitters[1].sphere, 0);
+  EXPECT_EQ(s.emitters[1].radiance, Color(2.0f));
+  expectError([&] { loadText(dir, sceneXml("<emitter type=\"area\"/>")); }, {"must be nested inside a <shape>"});
 }
 
 }  // namespace

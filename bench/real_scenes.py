@@ -1,0 +1,196 @@
+#!/usr/bin/env python3
+"""Real-scene corpus (issue 18): public Mitsuba 3 scenes written by other people, rendered unchanged.
+
+For every scene file of the corpus it makes a small copy (film scaled to --res pixels wide, nothing
+else changed; included files are copied the same way) and records
+  load_path / load_rcache   rcache renders it in strict mode with --integrator path / rcache
+                            (else the first error line: the first unsupported feature, file:line)
+  lenient                   rcache --lenient renders it (and how many substitutions it listed)
+  mitsuba                   Mitsuba 3 (scalar_rgb) renders it
+and, where both rcache's path tracer and Mitsuba render it, compares them:
+  mean_ratio                per-channel mean(rcache) / mean(Mitsuba)
+  block_z                   the largest |rcache − Mitsuba| of a 16-px block mean in units of its noise
+                            (noise from two rcache seeds, pooled over the block's 4×4-px sub-blocks so
+                            the reconstruction filter's pixel correlation is inside the estimate, plus
+                            Mitsuba's own noise at its spp)
+  agree                     |mean_ratio − 1| < 1 % in every channel and block_z < 4
+One JSON line per scene, then a summary line.
+
+The corpus is not shipped (sizes, licences); build it from the public repositories, e.g.
+  git -C mitsuba-data archive ... (mitsuba-renderer/mitsuba-data: docs/scenes, scenes, common)
+  mitsuba-renderer/mitsuba-tutorials: scenes/
+into one folder (default /tmp/corpus, layout as in those repositories, tutorials under tutorials/).
+Scenes that need mitsuba-data's Git-LFS assets missing from the snapshot fail in both renderers.
+
+  DRJIT_LIBLLVM_PATH=... /root/.cache/rcache/bench-venv/bin/python bench/real_scenes.py \
+      --rcache build/rcache --corpus /tmp/corpus --res 64 --spp 64 --spp-mitsuba 256
+"""
+import argparse
+import glob
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+
+# Scene files of the corpus (relative to --corpus). Fragments meant only for <include> are left out.
+CORPUS_GLOBS = ["docs/scenes/*.xml", "docs/scenes/principled_blend_creation/*.xml", "scenes/*.xml",
+                "scenes/cbox/*.xml", "scenes/matpreview/*.xml", "tutorials/scenes/*.xml",
+                "tutorials/scenes/lego/*.xml"]
+
+MITSUBA_SNIPPET = r"""
+import sys, mitsuba as mi
+mi.set_variant("scalar_rgb")
+scene = mi.load_file(sys.argv[1])
+img = mi.render(scene, spp=int(sys.argv[3]), seed=0)
+mi.Bitmap(img).write(sys.argv[2])
+"""
+
+
+def shrink_film(text, res):
+    """Scales every <film>'s integer width/height to `res` pixels wide (aspect kept)."""
+    def film(m):
+        block = m.group(0)
+        w = re.search(r'<integer\s+name="width"\s+value="(\d+)"\s*/>', block)
+        h = re.search(r'<integer\s+name="height"\s+value="(\d+)"\s*/>', block)
+        if not w or not h:
+            return block
+        W, H = int(w.group(1)), int(h.group(1))
+        nh = max(1, round(res * H / W))
+        block = block.replace(w.group(0), '<integer name="width" value="%d"/>' % res)
+        return block.replace(h.group(0), '<integer name="height" value="%d"/>' % nh)
+    return re.sub(r"<film\b.*?</film>", film, text, flags=re.S)
+
+
+def make_copy(corpus, work, res):
+    """Hard-linked copy of the corpus with every .xml rewritten (unlinked first: the originals stay)."""
+    if os.path.exists(work):
+        shutil.rmtree(work)
+    shutil.copytree(corpus, work, copy_function=os.link)
+    for path in glob.glob(os.path.join(work, "**", "*.xml"), recursive=True):
+        with open(path, errors="replace") as f:
+            text = f.read()
+        os.unlink(path)
+        with open(path, "w") as f:
+            f.write(shrink_film(text, res))
+
+
+def run(cmd, timeout):
+    try:
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+        return p.returncode, p.stdout + p.stderr
+    except subprocess.TimeoutExpired:
+        return -1, "timeout after %d s" % timeout
+
+
+def first_error(text):
+    for line in text.splitlines():
+        if "error" in line.lower() or ": " in line:
+            return line.strip()[:300]
+    return text.strip()[:300]
+
+
+def load_exr(path):
+    import mitsuba as mi
+    return np.array(mi.Bitmap(path), dtype=np.float64)[..., :3]
+
+
+def block_means(img, b):
+    h, w, c = img.shape
+    h2, w2 = h // b * b, w // b * b
+    return img[:h2, :w2].reshape(h2 // b, b, w2 // b, b, c).mean(axis=(1, 3))
+
+
+def compare(a, b, m, spp, spp_mitsuba):
+    mean_ratio = (a.mean(axis=(0, 1)) / np.maximum(m.mean(axis=(0, 1)), 1e-12)).tolist()
+    if a.shape[0] < 16 or a.shape[1] < 16:
+        return mean_ratio, None
+    a16, m16 = block_means(a, 16), block_means(m, 16)
+    # Noise of a 16-px block mean: the 16 sub-blocks (4×4 px) of each block give 16·3 estimates of
+    # the sub-block variance from the seed difference; a block mean averages 16 sub-blocks.
+    d4 = block_means(a, 4) - block_means(b, 4)
+    H, W = a16.shape[:2]
+    d4 = d4[:H * 4, :W * 4].reshape(H, 4, W, 4, 3)
+    var_sub = (d4 ** 2).mean(axis=(1, 3, 4)) / 2.0
+    var_blk = var_sub / 16.0 * (1.0 + spp / spp_mitsuba)
+    z = np.abs(a16 - m16) / np.sqrt(np.maximum(var_blk, 1e-20))[..., None]
+    # Blocks that are exactly equal and noiseless (black background) carry no information.
+    z[np.abs(a16 - m16) < 1e-7] = 0.0
+    return mean_ratio, float(z.max())
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--rcache", default="build/rcache")
+    ap.add_argument("--corpus", default="/tmp/corpus")
+    ap.add_argument("--work", default="/tmp/rcache_real_scenes")
+    ap.add_argument("--res", type=int, default=64)
+    ap.add_argument("--spp", type=int, default=64, help="rcache path tracer spp (two seeds)")
+    ap.add_argument("--spp-mitsuba", type=int, default=256)
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--timeout", type=int, default=300)
+    ap.add_argument("--no-mitsuba", action="store_true")
+    ap.add_argument("--only", nargs="*", help="substrings of scene paths to run")
+    args = ap.parse_args()
+    rcache = os.path.abspath(args.rcache)
+    copy = os.path.join(args.work, "corpus")
+    out = os.path.join(args.work, "images")
+    make_copy(args.corpus, copy, args.res)
+    os.makedirs(out, exist_ok=True)
+
+    scenes = []
+    for g in CORPUS_GLOBS:
+        scenes += sorted(os.path.relpath(p, copy) for p in glob.glob(os.path.join(copy, g)))
+    if args.only:
+        scenes = [s for s in scenes if any(o in s for o in args.only)]
+    totals = {"scenes": 0, "load_path": 0, "load_rcache": 0, "lenient": 0, "mitsuba": 0, "compared": 0, "agree": 0}
+    for rel in scenes:
+        path = os.path.join(copy, rel)
+        tag = rel.replace("/", "_")[:-4]
+        row = {"scene": rel}
+        base = [rcache, path, "-t", str(args.threads), "--quiet"]
+        for integ in ("path", "rcache"):
+            rc, text = run(base + ["--integrator", integ, "--spp", "4", "-o", os.path.join(out, tag + "_" + integ + "_4.exr")],
+                           args.timeout)
+            row["load_" + integ] = rc == 0 or first_error(text)
+        rc, text = run(base + ["--lenient", "--integrator", "path", "--spp", "4", "-o", os.path.join(out, tag + "_lenient.exr")],
+                       args.timeout)
+        row["lenient"] = rc == 0 or first_error(text)
+        if not args.no_mitsuba:
+            # Whether Mitsuba renders it at all (4 spp), then a reference only where rcache renders too.
+            ref = os.path.join(out, tag + "_mitsuba.exr")
+            rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, "4"], args.timeout)
+            row["mitsuba"] = rc == 0 or first_error(text.strip().splitlines()[-1] if text.strip() else text)
+            if row["mitsuba"] is True and row["load_path"] is True:
+                rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, str(args.spp_mitsuba)], args.timeout * 4)
+                row["mitsuba"] = rc == 0 or first_error(text)
+            if row["mitsuba"] is True and row["load_path"] is True:
+                imgs = []
+                for seed in (1, 2):
+                    img = os.path.join(out, "%s_path_s%d.exr" % (tag, seed))
+                    rc, text = run(base + ["--integrator", "path", "--spp", str(args.spp), "--seed", str(seed), "-o", img],
+                                   args.timeout)
+                    imgs.append(img if rc == 0 else None)
+                if all(imgs):
+                    a, b, m = load_exr(imgs[0]), load_exr(imgs[1]), load_exr(ref)
+                    if a.shape == m.shape:
+                        row["mean_ratio"], row["block_z"] = compare(a, b, m, args.spp, args.spp_mitsuba)
+                        row["agree"] = bool(all(abs(r - 1) < 0.01 for r in row["mean_ratio"]) and
+                                            (row["block_z"] is None or row["block_z"] < 4))
+                    else:
+                        row["agree"] = False
+                        row["shape_mismatch"] = [list(a.shape), list(m.shape)]
+        print(json.dumps(row), flush=True)
+        totals["scenes"] += 1
+        for k in ("load_path", "load_rcache", "lenient", "mitsuba"):
+            totals[k] += row.get(k) is True
+        totals["compared"] += "agree" in row
+        totals["agree"] += row.get("agree") is True
+    print(json.dumps({"summary": totals}), flush=True)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,31 @@
+#pragma once
+// Phase 0 of an rcache render (docs/ARCHITECTURE.md §Pipeline): whether caching can pay at all,
+// measured before any record is made. A pilot traces the camera rays of a sparse grid of pixel
+// centres (about kPilotPoints) and one BSDF continuation below each point rendered by importance
+// sampling; a point counts as served by the cache when its own material is cached, or when its
+// continuation lands on a cached material (its reflected light then comes from records). The
+// cache only lowers the noise of that share s of the image, at a fill cost and a per-sample
+// overhead o of the batched final pass over the path tracer, so at equal time it wins at most
+// (1 − s + s·r)(1 + o) ≥ (1 − s)(1 + o) of the path tracer's error (r: its remaining error
+// ratio on the served points): with o ≈ 0.3–0.8 (bench/RESULTS.md) it cannot win below
+// s ≈ o / (1 + o) ≈ 0.25–0.45. Below fallback_share (0.25) the whole image is path traced by
+// the path integrator (same max_depth, same estimator), and the statistics say so.
+#include <cstddef>
+#include <string>
+
+#include "cache/rcache_run.h"
+
+namespace rc {
+
+struct FallbackDecision {
+  bool pathTrace = false;
+  double servedShare = 0.0;  // s: pilot points (with a surface hit) the cache would serve
+  size_t pilotPoints = 0;    // pilot camera rays that hit a surface
+  std::string reason;        // for the statistics
+};
+
+// Never falls back when params.fallback is false, when a cache is loaded or is to be saved (the
+// user asked for the cache itself), or when nothing is hit.
+FallbackDecision decideFallback(const RcacheRun& run);
+
+}  // namespace rc

@@ -1,0 +1,217 @@
+// The environment split (cache/light_split.h): the threshold's choice on synthetic maps, the
+// two parts adding up to the envmap exactly, and rcache with the environment in its records
+// agreeing with the path tracer per 16-px block.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "cache/light_split.h"
+#include "core/rng.h"
+#include "test_scene.h"
+
+namespace rc {
+namespace {
+
+constexpr int kEnvW = 64, kEnvH = 33;
+
+std::string statText(const RenderStats& st, const std::string& key) {
+  for (const auto& [k, v] : st.texts)
+    if (k == key) return v;
+  return "";
+}
+
+// A sky: luminance rising toward the zenith, dark ground below the horizon, optionally a sun
+// (a 2×2-texel block `sunLum` bright, 30° above the horizon).
+std::vector<Color> skyTexels(float sunLum) {
+  std::vector<Color> px(static_cast<size_t>(kEnvW) * kEnvH);
+  for (int y = 0; y < kEnvH; ++y)
+    for (int x = 0; x < kEnvW; ++x) {
+      const float cosTheta = std::cos(kPi * y / (kEnvH - 1));
+      px[static_cast<size_t>(y) * kEnvW + x] =
+          cosTheta > 0.0f ? Color(0.6f, 0.8f, 1.2f) * (0.5f + cosTheta) : Color(0.08f, 0.07f, 0.06f);
+    }
+  if (sunLum > 0.0f)
+    for (int y = 10; y < 12; ++y)
+      for (int x = 20; x < 22; ++x) px[static_cast<size_t>(y) * kEnvW + x] = Color(sunLum);
+  return px;
+}
+
+Emitter skyEmitter(float sunLum) {
+  Emitter e;
+  e.type = EmitterType::Envmap;
+  e.filename = "synthetic-sky";
+  e.envWidth = kEnvW;
+  e.envHeight = kEnvH;
+  e.envPixels = skyTexels(sunLum);
+  return e;
+}
+
+TEST(LightSplit, UniformMapIsCachedWholeAndSunIsSplitOff) {
+  const std::vector<Color> uniform(static_cast<size_t>(kEnvW) * kEnvH, Color(2.0f));
+  EXPECT_TRUE(std::isinf(environmentSplitThreshold(kEnvW, kEnvH, uniform, Mat3(1.0f), 1.0f / 3.0f)));
+  // The sky alone (zenith 1.5× the horizon, dark ground) passes the variance bound whole.
+  EXPECT_TRUE(std::isinf(environmentSplitThreshold(kEnvW, kEnvH, skyTexels(0.0f), Mat3(1.0f), 1.0f / 3.0f)));
+  // With a sun the threshold lies between the sky's brightest texel and the sun.
+  const float tau = environmentSplitThreshold(kEnvW, kEnvH, skyTexels(5000.0f), Mat3(1.0f), 1.0f / 3.0f);
+  const float skyMax = luminance(Color(0.6f, 0.8f, 1.2f)) * 1.5f;
+  std::printf("sun map: tau = %g (sky max %g)\n", tau, skyMax);
+  EXPECT_GT(tau, skyMax);
+  EXPECT_LT(tau, 5000.0f);
+  // A smaller κ never raises the threshold.
+  EXPECT_LE(environmentSplitThreshold(kEnvW, kEnvH, skyTexels(5000.0f), Mat3(1.0f), 0.05f), tau);
+}
+
+TEST(LightSplit, PartsAddUpToTheEnvmapInEveryDirection) {
+  Scene s;
+  s.emitters.push_back(skyEmitter(5000.0f));
+  s.emitters.back().scale = 0.7f;
+  Emitter c;
+  c.type = EmitterType::Constant;
+  c.radiance = Color(0.2f, 0.3f, 0.4f);
+  s.emitters.push_back(c);
+  const LightSampler full(s);
+  const LightSplit split(s, true, 1.0f / 3.0f);
+  ASSERT_TRUE(split.active());
+  EXPECT_GT(split.summary().cachedFraction, 0.05);
+  EXPECT_GT(split.summary().sampledFraction, 0.05);
+  EXPECT_NEAR(split.summary().cachedFraction + split.summary().sampledFraction, 1.0, 1e-12);
+  Rng rng(7, 0);
+  for (int i = 0; i < 2000; ++i) {
+    const Vec2 u = rng.next2D();
+    const float z = 1.0f - 2.0f * u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;
+    const Vec3 d(r * std::cos(phi), r * std::sin(phi), z);
+    const Color whole = full.environment(d);
+    const Color parts = split.cached(d) + split.residualLights().environment(d);
+    for (int k = 0; k < 3; ++k) ASSERT_NEAR(parts[k], whole[k], 1e-4f * (1.0f + whole[k])) << "direction " << i;
+    // The cached part never exceeds τ by more than interpolation between clamped texels can.
+    EXPECT_LE(luminance(split.cached(d)), split.summary().threshold + luminance(c.radiance) + 1e-3f);
+  }
+  // The residual sampler still samples the residual by importance: its pdf is positive on the
+  // sun and zero where the residual is zero (the sky below τ).
+  const Vec3 sunDir = envDirection(21.0f / kEnvW, 10.5f / (kEnvH - 1));
+  EXPECT_GT(split.residualLights().environmentPdf(sunDir), 0.0f);
+  EXPECT_EQ(split.residualLights().environmentPdf(Vec3(0, 1, 0)), 0.0f);
+}
+
+TEST(LightSplit, DisabledWithoutEnvironmentOrWhenOff) {
+  const Scene box = test::boxScene(0.3f);
+  EXPECT_FALSE(LightSplit(box, true, 1.0f / 3.0f).active());
+  Scene sky;
+  sky.emitters.push_back(skyEmitter(5000.0f));
+  EXPECT_FALSE(LightSplit(sky, false, 1.0f / 3.0f).active());
+}
+
+// A diffuse floor, a glossy (radiance-cached) sphere and a diffuse sphere under the sun sky.
+Scene skyScene(int res) {
+  Scene s;
+  s.bsdfs.push_back(test::diffuse(0.5f, 0.45f, 0.4f));  // 0 floor
+  s.bsdfs.push_back(test::glossy(0.3f));                // 1 glossy sphere
+  s.bsdfs.push_back(test::diffuse(0.2f, 0.5f, 0.7f));   // 2 diffuse sphere
+  test::addQuad(s, {-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}, 0);
+  Sphere a;
+  a.name = "glossy";
+  a.center = Vec3(-0.55f, 0.5f, 0.0f);
+  a.radius = 0.5f;
+  a.bsdf = 1;
+  s.spheres.push_back(a);
+  Sphere b = a;
+  b.name = "diffuse";
+  b.center = Vec3(0.6f, 0.4f, 0.3f);
+  b.radius = 0.4f;
+  b.bsdf = 2;
+  s.spheres.push_back(b);
+  s.emitters.push_back(skyEmitter(400.0f));
+  test::setTestCamera(s, Vec3(0, 1.6f, 3.2f), Vec3(0, 0.3f, 0), res, res);
+  return s;
+}
+
+struct BlockStats {
+  std::vector<double> mean;  // per block, per channel: 3 values each
+};
+BlockStats blockMeans(const Image& img, int block) {
+  BlockStats b;
+  for (int by = 0; by < img.height / block; ++by)
+    for (int bx = 0; bx < img.width / block; ++bx) {
+      double m[3] = {};
+      for (int y = by * block; y < (by + 1) * block; ++y)
+        for (int x = bx * block; x < (bx + 1) * block; ++x)
+          for (int c = 0; c < 3; ++c) m[c] += img.pixels[static_cast<size_t>(y) * img.width + x][c];
+      for (double v : m) b.mean.push_back(v / (block * block));
+    }
+  return b;
+}
+
+TEST(LightSplit, CachedEnvironmentAgreesWithPathTracerPerBlock) {
+  const Scene s = skyScene(48);
+  const auto ref = test::renderScene(s, test::pathSettings(s), 512, 11);
+  const auto cached = test::renderScene(s, test::rcacheSettings(s), 16, 3);
+  const auto sampled = test::renderScene(s, test::rcacheSettings(s, {{"env_cache", "false"}}), 16, 3);
+  EXPECT_EQ(statText(cached.stats, "env_cache"), "split");
+  EXPECT_GT(cached.stats.get("env_cached_fraction"), 0.1);
+  EXPECT_GT(cached.stats.get("env_sampled_fraction"), 0.1);
+  EXPECT_EQ(statText(sampled.stats, "env_cache"), "off (disabled)");
+  const BlockStats r = blockMeans(ref.image, 16), a = blockMeans(cached.image, 16), b = blockMeans(sampled.image, 16);
+  // Tolerance: 4 % of the block mean + 0.01 per channel. Half of it is the reference's own noise:
+  // two 512-spp references with different seeds differ by up to 2.0 % in their worst block and
+  // channel (measured). The other half is the cache's record noise, correlated over a block rather
+  // than averaged by it (records a few pixels apart on a 48² image). Leaving the cached sky out
+  // (≥ 10 % of the sky's power) or counting it twice (records and direct light: measured 8.1× the
+  // tolerance) moves the blocks by far more.
+  double worstCached = 0.0, worstSampled = 0.0;
+  for (size_t i = 0; i < r.mean.size(); ++i) {
+    const double tol = 0.04 * r.mean[i] + 0.01;
+    worstCached = std::max(worstCached, std::fabs(a.mean[i] - r.mean[i]) / tol);
+    worstSampled = std::max(worstSampled, std::fabs(b.mean[i] - r.mean[i]) / tol);
+  }
+  std::printf("worst block error / tolerance: env cached %.3f, env sampled %.3f\n", worstCached, worstSampled);
+  EXPECT_LT(worstCached, 1.0);
+  EXPECT_LT(worstSampled, 1.0);
+}
+
+// area_cache=true: records carry the emission their rays find on the area light and cached points
+// stop light-sampling it. On a large dim panel (most of the ceiling, the box's light power) the
+// image has the path tracer's expectation, block by block (tolerance and reason as above);
+// double counting the light or dropping it is far outside. (A small bright light is what records
+// estimate badly: bench/RESULTS.md, which is why area_cache is off by default.)
+TEST(LightSplit, CachedLargeAreaLightAgreesWithPathTracerPerBlock) {
+  Scene s = test::boxScene(0.3f, 48, 32);
+  Mesh& panel = s.meshes.back();
+  ASSERT_EQ(panel.emitter, 0);
+  panel.positions = {{-0.9f, 1.98f, -0.9f}, {0.9f, 1.98f, -0.9f}, {0.9f, 1.98f, 0.9f}, {-0.9f, 1.98f, 0.9f}};
+  s.emitters[0].radiance = Color(12.0f * 0.36f / 3.24f);
+  const auto ref = test::renderScene(s, test::pathSettings(s), 512, 11);
+  const auto cached = test::renderScene(s, test::rcacheSettings(s, {{"area_cache", "true"}}), 16, 3);
+  EXPECT_EQ(statText(cached.stats, "area_cache"), "area emitters cached");
+  EXPECT_EQ(statText(cached.stats, "env_cache"), "off (no environment emitter)");
+  const BlockStats r = blockMeans(ref.image, 16), a = blockMeans(cached.image, 16);
+  double worst = 0.0;
+  for (size_t i = 0; i < r.mean.size(); ++i)
+    worst = std::max(worst, std::fabs(a.mean[i] - r.mean[i]) / (0.04 * r.mean[i] + 0.01));
+  std::printf("worst block error / tolerance: area light cached %.3f\n", worst);
+  EXPECT_LT(worst, 1.0);
+}
+
+// The pilot (cache/path_fallback.h): a scene of sharp materials only gives the cache nothing to
+// serve, so rcache hands the image to the path tracer — the very image `path` renders, bit for
+// bit — and says so; with fallback=false it caches anyway; the sky scene's cached materials keep
+// the cache.
+TEST(PathFallback, SharpSceneIsPathTracedAndSaysSo) {
+  Scene s = skyScene(32);
+  for (auto& b : s.bsdfs) b = test::glossy(0.02f);
+  const auto path = test::renderScene(s, test::pathSettings(s), 4, 5);
+  const auto auto_ = test::renderScene(s, test::rcacheSettings(s), 4, 5);
+  EXPECT_EQ(statText(auto_.stats, "fallback").rfind("path traced", 0), 0u) << statText(auto_.stats, "fallback");
+  EXPECT_LT(auto_.stats.get("pilot_served_share", 1.0), 0.25);
+  ASSERT_EQ(auto_.image.pixels.size(), path.image.pixels.size());
+  for (size_t i = 0; i < path.image.pixels.size(); ++i) ASSERT_EQ(auto_.image.pixels[i], path.image.pixels[i]) << i;
+  const auto forced = test::renderScene(s, test::rcacheSettings(s, {{"fallback", "false"}}), 4, 5);
+  EXPECT_EQ(statText(forced.stats, "fallback"), "not considered");
+  const Scene sky = skyScene(32);
+  const auto cached = test::renderScene(sky, test::rcacheSettings(sky), 2, 5);
+  EXPECT_EQ(statText(cached.stats, "fallback").rfind("cached", 0), 0u) << statText(cached.stats, "fallback");
+  EXPECT_GT(cached.stats.get("records"), 0.0);
+}
+
+}  // namespace
+}  // namespace rc
