@@ -169,13 +169,25 @@ def final_task(rcache, scene, crop, frame, cache, workdir, name, output, extra):
 
 # ---- driver
 
+def read_exr(path):
+    """RGB of an image as float32 [height, width, 3] (ImageInput, not ImageBuf: ImageBuf's cache
+    would serve a stale copy of a file rewritten under the same name)."""
+    import OpenImageIO as oiio
+    inp = oiio.ImageInput.open(path)
+    if inp is None:
+        raise RuntimeError("%s: cannot read: %s" % (path, oiio.geterror()))
+    try:
+        return inp.read_image(oiio.FLOAT)[:, :, :3]
+    finally:
+        inp.close()
+
+
 def assemble(tiles, tile_files, width, height, output):
     import numpy as np
     import OpenImageIO as oiio
     full = np.zeros((height, width, 3), dtype=np.float32)
     for t, path in zip(tiles, tile_files):
-        img = oiio.ImageBuf(path)
-        px = img.get_pixels(oiio.FLOAT)[:, :, :3]
+        px = read_exr(path)
         cx, cy = t["crop"][0], t["crop"][1]
         ox, oy = t["x"] - cx, t["y"] - cy
         full[t["y"]:t["y"] + t["h"], t["x"]:t["x"] + t["w"]] = px[oy:oy + t["h"], ox:ox + t["w"]]
