@@ -213,22 +213,51 @@ def uses_cache(rcache, scene, extra):
             return json.load(f).get("integrator") == "rcache"
 
 
+class _PhaseTimes:
+    """Wall time of each phase (fill, merge, final, assemble): the phases are barriers anyway (the
+    merge needs every part, the final pass the merged cache)."""
+
+    def __init__(self):
+        self.seconds = {}
+        self._last = time.time()
+
+    def mark(self, phase):
+        now = time.time()
+        self.seconds[phase] = round(now - self._last, 3)
+        self._last = now
+
+    def wait(self, phase, futures):
+        from dask.distributed import wait
+        wait(futures)
+        for f in futures:
+            if f.status == "error":
+                f.result()  # raises the task's error
+        self.mark(phase)
+
+
 def render_still(client, rcache, scene, output, workdir, tiles_x, tiles_y, extra, defines):
     width, height, border = film_of(scene, defines)
     tiles = make_tiles(width, height, tiles_x, tiles_y, border)
+    times = _PhaseTimes()
     cache = None
     if uses_cache(rcache, scene, extra):
         parts = [client.submit(fill_task, rcache, scene, t["crop"], None, workdir, "fill_tile%d" % t["index"], extra,
                                pure=False) for t in tiles]
+        times.wait("fill", parts)
         cache = client.submit(merge_task, rcache, parts, os.path.join(workdir, "merged.rcc"), workdir, pure=False)
+        times.wait("merge", [cache])
     finals = [client.submit(final_task, rcache, scene, t["crop"], None, cache, workdir, "final_tile%d" % t["index"],
                             os.path.join(workdir, "tile%d.exr" % t["index"]), extra, pure=False) for t in tiles]
     tile_files = client.gather(finals)
+    times.mark("final")
     assemble(tiles, tile_files, width, height, output)
-    return {"tiles": len(tiles), "border": border, "cache": cache.result() if cache is not None else None}
+    times.mark("assemble")
+    return {"tiles": len(tiles), "border": border, "cache": cache.result() if cache is not None else None,
+            "times_s": times.seconds}
 
 
 def render_walk(client, rcache, scene, output, workdir, frames, camera_path, chunks, extra):
+    times = _PhaseTimes()
     cache = None
     if uses_cache(rcache, scene, extra):
         chunks = max(1, min(chunks, frames))
@@ -238,12 +267,16 @@ def render_walk(client, rcache, scene, output, workdir, frames, camera_path, chu
                      "end": frames * (c + 1) // chunks}
             parts.append(client.submit(fill_task, rcache, scene, None, chunk, workdir, "fill_frames%d" % c, extra,
                                        pure=False))
+        times.wait("fill", parts)
         cache = client.submit(merge_task, rcache, parts, os.path.join(workdir, "merged.rcc"), workdir, pure=False)
+        times.wait("merge", [cache])
     stem, ext = os.path.splitext(output)
     finals = [client.submit(final_task, rcache, scene, None, {"count": frames, "path": camera_path, "index": f}, cache,
                             workdir, "final_frame%d" % f, "%s_%04d%s" % (stem, f, ext), extra, pure=False)
               for f in range(frames)]
-    return {"frames": client.gather(finals), "cache": cache.result() if cache is not None else None}
+    frame_files = client.gather(finals)
+    times.mark("final")
+    return {"frames": frame_files, "cache": cache.result() if cache is not None else None, "times_s": times.seconds}
 
 
 def parse_args(argv):

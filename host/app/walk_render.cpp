@@ -52,6 +52,9 @@ RenderStats renderWalk(const WalkJob& job) {
   for (int f = first; f < end && !interrupted; ++f) {
     job.scene.camera = cameraOfFrame(base, keys, f, ra.frames);
     RenderContext ctx = job.ctx;
+    // Frame f draws with seed + f: noise that stays put on the screen while the camera moves
+    // reads as a dirty lens; independent frames let the eye average it away.
+    ctx.options.seed += static_cast<uint64_t>(f);
     // One bar over the frames: a frame's phases advance it within the frame.
     ctx.progress = [&job, f, n = ra.frames](const std::string&, double done, double work) {
       job.bar.update("frames", f + std::min(0.999, work > 0.0 ? done / work : 0.0), n);

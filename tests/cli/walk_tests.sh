@@ -3,14 +3,7 @@
 # hdrfilm crop parameters, --frames with --camera-path (files, one shared cache growing frame by
 # frame), `rcache cache merge` (order independence, refusal of other scenes), and their errors.
 # Usage: walk_tests.sh path/to/rcache  (run by CTest, label "cli")
-set -uo pipefail
-RC=$1
-DATA=$(cd "$(dirname "$0")/data" && pwd)
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-fails=0
-pass() { echo "PASS $1"; }
-fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
+source "$(dirname "$0")/test_lib.sh"
 json_num() {  # file, key: the first number of "key": N
   grep -o "\"$2\": [-0-9.e+]*" "$1" | head -1 | sed 's/.*: //'
 }
