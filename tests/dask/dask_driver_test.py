@@ -164,7 +164,7 @@ def main():
         # 3. A worker killed mid-task: the task is redone on the other worker, the image is complete.
         work = os.path.join(tmp, "w3")
         os.makedirs(work)
-        slow_args = ["--integrator", "path", "--seed", "5", "-t", "1", "-D", "res=32", "-D", "spp=256"]
+        slow_args = ["--integrator", "path", "--seed", "5", "-t", "1", "-D", "res=32", "-D", "spp=512"]
         rcache(os.path.join(DATA, "tiny.xml"), "--quiet", "-o", os.path.join(tmp, "single_slow.exr"), *slow_args)
         killed = {}
 
