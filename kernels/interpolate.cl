@@ -1,7 +1,7 @@
 /* interpolate: Λ(p) = Σ w_c·Rot_c(Λ_r + dt·∂Λ_r/∂t + db·∂Λ_r/∂b) / Σ w_c (host/sh/batches.h
  * InterpolateBatch). One work-item per shading point. Per-record mode rotates every contribution
  * from the record's frame into p's; world-frame mode sums in world frame and rotates once
- * (rotation is linear and the weights are scalars, DESIGN §3). */
+ * (rotation is linear and the weights are scalars, ARCHITECTURE.md §Kernels). */
 #include "shared/rc_types.h"
 #ifndef RC_ORDER
 #define RC_ORDER 10

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -22,6 +21,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/timing.h"
 #include "geometry/accel.h"
 #include "image/image_file.h"
 #include "image/oiio_module.h"
@@ -40,9 +40,6 @@ extern "C" void onInterrupt(int) {
   // Second Ctrl-C: the user insists, leave immediately.
   if (gCancel.exchange(true)) std::_Exit(130);
 }
-
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 std::string defaultOutputPath(const std::string& scenePath) {
   const size_t slash = scenePath.find_last_of('/');
@@ -80,6 +77,21 @@ std::string chooseIntegrator(const std::string& requested, const Scene& scene) {
   return scene.integrator.type;
 }
 
+// The integrator to render with (--integrator, else the file's), with the -D names that are its
+// parameters applied: they override the file; other names are scene parameters only, as in Mitsuba.
+std::unique_ptr<Integrator> integratorFor(const RenderArgs& ra, const Scene& scene, const IntegratorEntry*& entry) {
+  IntegratorSettings settings = scene.integrator;
+  settings.type = chooseIntegrator(ra.integrator, scene);
+  const std::vector<std::string> paramNames = integratorParameterNames(settings.type);
+  for (const auto& kv : ra.defines)
+    if (std::find(paramNames.begin(), paramNames.end(), kv.first) != paramNames.end())
+      settings.props.set(kv.first, textProperty(kv.second));
+  std::vector<std::string> warnings;
+  auto integrator = makeIntegrator(settings, ra.lenient, settings.type == scene.integrator.type, &warnings, &entry);
+  for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+  return integrator;
+}
+
 int runRender(const std::vector<std::string>& args) {
   RenderArgs ra = parseRenderArgs(args);
   if (ra.threads > 0) setThreadCount(ra.threads);
@@ -93,7 +105,7 @@ int runRender(const std::vector<std::string>& args) {
     }
 
   RenderStats stats;
-  const auto tStart = Clock::now();
+  const auto tStart = SteadyClock::now();
   LoadOptions lo;
   lo.defines = ra.defines;
   lo.lenient = ra.lenient;
@@ -101,26 +113,15 @@ int runRender(const std::vector<std::string>& args) {
   Scene scene = loadScene(ra.scenePath, lo, &warnings);
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
   applyCropFlag(ra.crop, scene.film);
+  const IntegratorEntry* entry = nullptr;
+  std::unique_ptr<Integrator> integrator = integratorFor(ra, scene, entry);
   const double loadS = secondsSince(tStart);
 
-  const auto tBvh = Clock::now();
+  const auto tBvh = SteadyClock::now();
   Accel accel(scene);
   LightSampler lights(scene);
   const double bvhS = secondsSince(tBvh);
 
-  IntegratorSettings settings = scene.integrator;
-  settings.type = chooseIntegrator(ra.integrator, scene);
-  // -D also reaches the integrator's own parameters (a, rays, max_depth, ...), overriding the
-  // file; other names are scene parameters only, as in Mitsuba.
-  const std::vector<std::string> paramNames = integratorParameterNames(settings.type);
-  for (const auto& kv : ra.defines)
-    if (std::find(paramNames.begin(), paramNames.end(), kv.first) != paramNames.end())
-      settings.props.set(kv.first, textProperty(kv.second));
-  const IntegratorEntry* entry = nullptr;
-  warnings.clear();
-  std::unique_ptr<Integrator> integrator =
-      makeIntegrator(settings, ra.lenient, settings.type == scene.integrator.type, &warnings, &entry);
-  for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
   std::unique_ptr<ShBackend> backend;
   if (entry->usesKernels) {
     std::string notice;
@@ -152,13 +153,13 @@ int runRender(const std::vector<std::string>& args) {
     if (!ra.statsPath.empty()) writeFileAtomically(ra.statsPath, statsToJson(stats));
     return gCancel ? 130 : 0;
   }
-  const auto tRender = Clock::now();
+  const auto tRender = SteadyClock::now();
   Image image = integrator->render(ctx, stats);
   const double renderS = secondsSince(tRender);
   std::signal(SIGINT, SIG_DFL);
   bar.finish();
 
-  const auto tWrite = Clock::now();
+  const auto tWrite = SteadyClock::now();
   writeImage(image, output);
   const double writeS = secondsSince(tWrite);
 

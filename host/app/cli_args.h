@@ -1,5 +1,5 @@
 #pragma once
-// Command-line options of `rcache SCENE.xml` (DESIGN §5), parsed strictly: an unknown flag, a
+// Command-line options of `rcache SCENE.xml` (README "Command line"), parsed strictly: an unknown flag, a
 // missing value or an absurd number is an rc::Error that names the flag.
 #include <cstdint>
 #include <map>

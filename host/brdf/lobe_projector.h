@@ -1,5 +1,5 @@
 #pragma once
-// Projection of one BRDF lobe onto real SH (DESIGN §2/§3 brdf_project): for a fixed ω_o (local
+// Projection of one BRDF lobe onto real SH (ARCHITECTURE.md §Conventions, §Kernels): for a fixed ω_o (local
 // frame, z = normal) the lobe g(ω_i) = f_r(ω_i, ω_o)·cos θ_i, zero below the horizon, has
 // coefficients F_c,i = ∫ g_c(ω) y_i(ω) dω. Sharp lobes defeat uniform quadrature (a GGX lobe of
 // α = 0.05 covers ~0.1% of the hemisphere), so the integral is estimated with multi-sample

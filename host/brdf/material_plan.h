@@ -1,6 +1,6 @@
 #pragma once
-// Per-material technique, SH order and BRDF×cos coefficient table (DESIGN §1 "analyse", §3
-// brdf_project). For every BSDF of a scene:
+// Per-material technique, SH order and BRDF×cos coefficient table (ARCHITECTURE.md §Pipeline, §Kernels
+//). For every BSDF of a scene:
 //   delta lobes or transmission        → "importance sampling" (no table)
 //   diffuse only                       → "irradiance cache": order-3 table of the clamped-cosine
 //                                        lobe (same table machinery as glossy, one cache)

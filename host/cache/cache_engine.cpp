@@ -12,6 +12,7 @@
 #include "core/rng.h"
 #include "core/timing.h"
 #include "render/direct_light.h"
+#include "scene/integrator_params.h"
 #include "sh/sh_basis.h"
 
 namespace rc {
@@ -76,7 +77,7 @@ Technique CacheEngine::technique(const ShadePoint& sp) const {
 }
 
 bool CacheEngine::hasIndirect(const ShadePoint& sp) const {
-  return !(maxDepth_ >= 0 && sp.depth + 2 > maxDepth_) && sp.depth < kHardDepthLimit;
+  return withinMaxDepth(maxDepth_, sp.depth + 2) && sp.depth < kHardDepthLimit;
 }
 
 bool CacheEngine::continuesPath(const ShadePoint& sp) const {
@@ -104,7 +105,7 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& sp = pts[i];
       if (!sp.active) continue;
-      if (maxDepth_ >= 0 && sp.depth + 1 > maxDepth_) continue;
+      if (!withinMaxDepth(maxDepth_, sp.depth + 1)) continue;
       // Secondary hits (of record rays, or of continuations below importance-sampled surfaces):
       // a Lambertian hit skips the BSDF strategy and its ray (see directLightLightOnly); for
       // record rays its noise is averaged over the hemisphere anyway. A record ray's hit draws
@@ -201,7 +202,7 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
 void CacheEngine::fill(const std::vector<ShadePoint>& pts, const std::vector<float>& baseLum, bool adaptive) {
   std::map<CacheKey, std::vector<size_t>> groups;
   for (size_t i = 0; i < pts.size(); ++i)
-    if (isCached(technique(pts[i])) && (maxDepth_ < 0 || pts[i].depth + 2 <= maxDepth_)) groups[keyFor(pts[i])].push_back(i);
+    if (isCached(technique(pts[i])) && withinMaxDepth(maxDepth_, pts[i].depth + 2)) groups[keyFor(pts[i])].push_back(i);
   for (auto& [key, idx] : groups) {
     std::vector<ShadePoint> sub(idx.size());
     std::vector<float> lum(idx.size(), 0.0f);
@@ -336,28 +337,28 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
 
 ProjectBatch CacheEngine::recordBatch(const CacheKey& key, const std::vector<ShadePoint>& cands) {
   const int B = static_cast<int>(cands.size());
-  ProjectBatch pb;
-  hemisphereCells(key.level == 0 ? params_.rays : params_.secondaryRays, pb.M, pb.N);
-  const int S = pb.M * pb.N;
-  pb.order = key.order;
-  pb.records = B;
-  pb.gradients = params_.gradients;
-  pb.pattern.resize(2 * static_cast<size_t>(S));
+  ProjectBatch rayBatch;
+  hemisphereCells(key.level == 0 ? params_.rays : params_.secondaryRays, rayBatch.M, rayBatch.N);
+  const int S = rayBatch.M * rayBatch.N;
+  rayBatch.order = key.order;
+  rayBatch.records = B;
+  rayBatch.gradients = params_.gradients;
+  rayBatch.pattern.resize(2 * static_cast<size_t>(S));
   Rng prng(hashMix(ctx_.options.seed, recordCounter_, static_cast<uint64_t>(key.level) * 1000 + key.depth),
            kStreamRecordPattern);
-  for (auto& v : pb.pattern) v = prng.nextFloat();
-  pb.phi0.resize(B);
-  for (int b = 0; b < B; ++b) pb.phi0[b] = 2.0f * kPi * Rng(cands[b].seed, kStreamRecordAzimuth).nextFloat();
+  for (auto& v : rayBatch.pattern) v = prng.nextFloat();
+  rayBatch.phi0.resize(B);
+  for (int b = 0; b < B; ++b) rayBatch.phi0[b] = 2.0f * kPi * Rng(cands[b].seed, kStreamRecordAzimuth).nextFloat();
   // Smallest distance the gradient formula sees: a thousandth of a pixel footprint keeps 1/r
   // finite when geometry touches the record, yet far below any R_min.
   float minFp = INFINITY;
   for (const auto& c : cands) minFp = std::min(minFp, footprint(c.hit.p));
-  pb.minDistance = std::max(1e-3f * minFp, 1e-12f);
-  return pb;
+  rayBatch.minDistance = std::max(1e-3f * minFp, 1e-12f);
+  return rayBatch;
 }
 
-void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectBatch& pb, std::vector<Hit>& hits) {
-  const int M = pb.M, N = pb.N, S = M * N;
+void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectBatch& rayBatch, std::vector<Hit>& hits) {
+  const int M = rayBatch.M, N = rayBatch.N, S = M * N;
   const size_t total = cands.size() * S;
   std::vector<Ray> rays(total);
   hits.assign(total, Hit{});
@@ -367,9 +368,9 @@ void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectB
       for (int j = 0; j < M; ++j)
         for (int k = 0; k < N; ++k) {
           const size_t s = static_cast<size_t>(j) * N + k;
-          const float ct = 1.0f - (j + pb.pattern[2 * s]) / M;
+          const float ct = 1.0f - (j + rayBatch.pattern[2 * s]) / M;
           const float st = std::sqrt(std::max(0.0f, 1.0f - ct * ct));
-          const float phi = 2.0f * kPi * (k + pb.pattern[2 * s + 1]) / N + pb.phi0[b];
+          const float phi = 2.0f * kPi * (k + rayBatch.pattern[2 * s + 1]) / N + rayBatch.phi0[b];
           const Vec3 local(st * std::cos(phi), st * std::sin(phi), ct);
           rays[b * S + s] = Accel::spawnRay(c.hit, c.frame.toWorld(local));
         }
@@ -395,12 +396,12 @@ void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectB
   radianceOut(next, L);
   next.clear();
   next.shrink_to_fit();
-  pb.radiance.resize(total * 3);
-  pb.distance.resize(total);
+  rayBatch.radiance.resize(total * 3);
+  rayBatch.distance.resize(total);
   parallelFor(total, 16384, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
-      for (int c = 0; c < 3; ++c) pb.radiance[3 * i + c] = L[i][c];
-      pb.distance[i] = hits[i].valid() ? hits[i].t : 0.0f;
+      for (int c = 0; c < 3; ++c) rayBatch.radiance[3 * i + c] = L[i][c];
+      rayBatch.distance[i] = hits[i].valid() ? hits[i].t : 0.0f;
     }
   });
 }
@@ -456,34 +457,34 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
   if (cands.empty()) return {};
   RadianceCache& cache = cacheFor(key);
   const int B = static_cast<int>(cands.size());
-  ProjectBatch pb = recordBatch(key, cands);
-  const int S = pb.M * pb.N;
+  ProjectBatch rayBatch = recordBatch(key, cands);
+  const int S = rayBatch.M * rayBatch.N;
   std::vector<Hit> hits;
-  traceRecordRays(cands, pb, hits);
-  ProjectResult pr;
+  traceRecordRays(cands, rayBatch, hits);
+  ProjectResult projected;
   auto t0 = SteadyClock::now();
-  ctx_.backend->project(pb, pr);
+  ctx_.backend->project(rayBatch, projected);
   stats_.projection_s += secondsSince(t0);
   const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
   if (!params_.gradients) {
-    pr.gradT.assign(K * B, 0.0f);
-    pr.gradB.assign(K * B, 0.0f);
+    projected.gradT.assign(K * B, 0.0f);
+    projected.gradB.assign(K * B, 0.0f);
   }
   std::vector<RecordInfo> infos(B);
   for (int b = 0; b < B; ++b) {
-    stats_.droppedSamples += pr.dropped.empty() ? 0 : static_cast<uint64_t>(pr.dropped[b]);
-    infos[b] = clampRecord(key, cands[b], &hits[static_cast<size_t>(b) * S], S, pb.minDistance, &pr.lambda[K * b],
-                           &pr.gradT[K * b], &pr.gradB[K * b]);
+    stats_.droppedSamples += projected.dropped.empty() ? 0 : static_cast<uint64_t>(projected.dropped[b]);
+    infos[b] = clampRecord(key, cands[b], &hits[static_cast<size_t>(b) * S], S, rayBatch.minDistance, &projected.lambda[K * b],
+                           &projected.gradT[K * b], &projected.gradB[K * b]);
     if (key.level == 0 && cands[b].pixel >= 0) recordPixels_.push_back(cands[b].pixel);
   }
   WorldCopies world;
   if (params_.worldFrame) {
     t0 = SteadyClock::now();
-    world = rotateToWorld(*ctx_.backend, key.order, infos, pr.lambda, pr.gradT, pr.gradB);
+    world = rotateToWorld(*ctx_.backend, key.order, infos, projected.lambda, projected.gradT, projected.gradB);
     stats_.projection_s += secondsSince(t0);
   }
   std::vector<uint32_t> shrunk;
-  cache.insert(std::move(infos), pr.lambda, pr.gradT, pr.gradB, world.lambda, world.gradT, world.gradB, true, &shrunk);
+  cache.insert(std::move(infos), projected.lambda, projected.gradT, projected.gradB, world.lambda, world.gradT, world.gradB, true, &shrunk);
   recordCounter_ += static_cast<uint64_t>(B);
   return shrunk;
 }
@@ -544,11 +545,11 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
   // position in the chunk.
   auto interpolate = [&](size_t begin, const std::vector<uint32_t>& idx, bool world, std::vector<float>& lambda) {
     if (idx.empty()) return;
-    InterpolateBatch ib = interpolateBatch(key.order, world, idx.size());
+    InterpolateBatch interp = interpolateBatch(key.order, world, idx.size());
     std::vector<uint32_t> used;
     for (size_t j = 0; j < idx.size(); ++j) {
       const Lookup& lk = lookups[begin + idx[j]];
-      frameRows(pts[begin + idx[j]].frame, &ib.pointFrames[9 * j]);
+      frameRows(pts[begin + idx[j]].frame, &interp.pointFrames[9 * j]);
       for (RcContribution c : lk.entries) {
         int& slot = remap[static_cast<size_t>(c.record)];
         if (slot < 0) {
@@ -556,17 +557,17 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
           used.push_back(static_cast<uint32_t>(c.record));
         }
         c.record = slot;
-        ib.entries.push_back(c);
+        interp.entries.push_back(c);
       }
-      ib.offsets[j + 1] = static_cast<int32_t>(ib.entries.size());
+      interp.offsets[j + 1] = static_cast<int32_t>(interp.entries.size());
       stats_.lookups += 1;
       stats_.contributions += lk.entries.size();
     }
-    addRecords(cache, used, ib);
+    addRecords(cache, used, interp);
     for (uint32_t r : used) remap[r] = -1;
     std::vector<float> part;
     const auto t0 = SteadyClock::now();
-    ctx_.backend->interpolate(ib, part);
+    ctx_.backend->interpolate(interp, part);
     stats_.interpolation_s += secondsSince(t0);
     for (size_t j = 0; j < idx.size(); ++j)
       std::copy(part.begin() + K * j, part.begin() + K * (j + 1), lambda.begin() + K * idx[j]);
@@ -577,7 +578,7 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
     for (size_t j = 0; j < count; ++j) {
       // frame=auto: where every contributing record lies in the point's tangent plane (all of a
       // flat wall) the per-record path costs at most an O(n²) z-rotation per record, the world
-      // path a full O(n³) rotation per point; both give the same Λ to float precision (DESIGN §3).
+      // path a full O(n³) rotation per point; both give the same Λ to float precision (ARCHITECTURE.md §Kernels).
       // The lookup tells (Lookup::sameNormal; contributions have n·n_i > 0).
       const bool record = params_.autoFrame ? lookups[begin + j].sameNormal : !params_.worldFrame;
       (record ? recordIdx : worldIdx).push_back(static_cast<uint32_t>(j));
@@ -625,20 +626,20 @@ void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, 
     stats_.dot_s += secondsSince(t0);
     return;
   }
-  BrdfDotBatch db;
-  db.order = order;
-  db.points = static_cast<int>(count);
-  db.lambda = lambda;
-  db.wo.resize(3 * count);
-  db.material.resize(count);
+  BrdfDotBatch dotBatch;
+  dotBatch.order = order;
+  dotBatch.points = static_cast<int>(count);
+  dotBatch.lambda = lambda;
+  dotBatch.wo.resize(3 * count);
+  dotBatch.material.resize(count);
   for (size_t j = 0; j < count; ++j) {
     const ShadePoint& sp = point(j);
-    for (int c = 0; c < 3; ++c) db.wo[3 * j + c] = sp.wo[c];
-    db.material[j] = tables_.plans()[static_cast<size_t>(sp.hit.bsdf)].tableIndex;
+    for (int c = 0; c < 3; ++c) dotBatch.wo[3 * j + c] = sp.wo[c];
+    dotBatch.material[j] = tables_.plans()[static_cast<size_t>(sp.hit.bsdf)].tableIndex;
   }
-  tables_.fillBatch(db);
+  tables_.fillBatch(dotBatch);
   std::vector<float> res;
-  ctx_.backend->brdfDot(db, res);
+  ctx_.backend->brdfDot(dotBatch, res);
   for (size_t j = 0; j < count; ++j) {
     // Extrapolation by gradients (or SH ringing) can dip below zero where light changes
     // abruptly; negative radiance is not physical and is clamped.
@@ -649,30 +650,30 @@ void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, 
 }
 
 InterpolateBatch CacheEngine::interpolateBatch(int order, bool world, size_t points) const {
-  InterpolateBatch ib;
-  ib.order = order;
-  ib.worldFrame = world;
-  ib.gradients = params_.gradients;
-  ib.points = static_cast<int>(points);
-  ib.pointFrames.resize(9 * points);
-  ib.offsets.resize(points + 1, 0);
-  return ib;
+  InterpolateBatch interp;
+  interp.order = order;
+  interp.worldFrame = world;
+  interp.gradients = params_.gradients;
+  interp.points = static_cast<int>(points);
+  interp.pointFrames.resize(9 * points);
+  interp.offsets.resize(points + 1, 0);
+  return interp;
 }
 
-void CacheEngine::addRecords(const RadianceCache& cache, const std::vector<uint32_t>& ids, InterpolateBatch& ib) const {
+void CacheEngine::addRecords(const RadianceCache& cache, const std::vector<uint32_t>& ids, InterpolateBatch& interp) const {
   const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
-  const bool world = ib.worldFrame;
-  ib.records = static_cast<int>(ids.size());
-  ib.lambda.resize(K * ids.size());
-  if (ib.gradients) {
-    ib.gradT.resize(K * ids.size());
-    ib.gradB.resize(K * ids.size());
+  const bool world = interp.worldFrame;
+  interp.records = static_cast<int>(ids.size());
+  interp.lambda.resize(K * ids.size());
+  if (interp.gradients) {
+    interp.gradT.resize(K * ids.size());
+    interp.gradB.resize(K * ids.size());
   }
-  if (!world) ib.recordFrames.resize(9 * ids.size());
+  if (!world) interp.recordFrames.resize(9 * ids.size());
   for (size_t r = 0; r < ids.size(); ++r) {
-    cache.copyCoefficients(ids[r], world, &ib.lambda[K * r], ib.gradients ? &ib.gradT[K * r] : nullptr,
-                           ib.gradients ? &ib.gradB[K * r] : nullptr);
-    if (!world) frameRows(cache.info(ids[r]).frame, &ib.recordFrames[9 * r]);
+    cache.copyCoefficients(ids[r], world, &interp.lambda[K * r], interp.gradients ? &interp.gradT[K * r] : nullptr,
+                           interp.gradients ? &interp.gradB[K * r] : nullptr);
+    if (!world) frameRows(cache.info(ids[r]).frame, &interp.recordFrames[9 * r]);
   }
 }
 
@@ -686,21 +687,21 @@ std::vector<Color> CacheEngine::recordPredictions(const CacheKey& key, const std
   std::vector<Color> pred(pairPoint.size());
   for (size_t begin = 0; begin < pairPoint.size(); begin += kChunk) {
     const size_t count = std::min(kChunk, pairPoint.size() - begin);
-    InterpolateBatch ib = interpolateBatch(key.order, params_.worldFrame, count);
+    InterpolateBatch interp = interpolateBatch(key.order, params_.worldFrame, count);
     std::vector<uint32_t> ids(count);
     for (size_t j = 0; j < count; ++j) {
       RcContribution c = pairEntry[begin + j];
       ids[j] = static_cast<uint32_t>(c.record);
-      frameRows(pts[pairPoint[begin + j]].frame, &ib.pointFrames[9 * j]);
+      frameRows(pts[pairPoint[begin + j]].frame, &interp.pointFrames[9 * j]);
       c.record = static_cast<int>(j);
       c.weight = 1.0f;
-      ib.entries.push_back(c);
-      ib.offsets[j + 1] = static_cast<int32_t>(j + 1);
+      interp.entries.push_back(c);
+      interp.offsets[j + 1] = static_cast<int32_t>(j + 1);
     }
-    addRecords(cache, ids, ib);
+    addRecords(cache, ids, interp);
     std::vector<float> lambda;
     auto t0 = SteadyClock::now();
-    ctx_.backend->interpolate(ib, lambda);
+    ctx_.backend->interpolate(interp, lambda);
     stats_.interpolation_s += secondsSince(t0);
     std::vector<size_t> idx(pairPoint.begin() + begin, pairPoint.begin() + begin + count);
     std::vector<Color> part(count);

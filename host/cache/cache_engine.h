@@ -1,5 +1,5 @@
 #pragma once
-// The radiance-caching engine (DESIGN §1): GetOutRadiance of the course notes, batched.
+// The radiance-caching engine (ARCHITECTURE.md §Pipeline): GetOutRadiance of the course notes, batched.
 //   radianceOut(points)  = direct light (render/direct_light.h, the path tracer's estimator) +
 //                          indirect(points)                       [emission of the points excluded]
 //   indirect(points)     = cached materials: ensure the cache covers the points (new records are
@@ -128,7 +128,7 @@ class CacheEngine {
   // The steps of buildRecords: the projection batch of the candidates (stratified ray pattern,
   // per-record azimuth), their rays traced and shaded into it, one record's radius clamped.
   ProjectBatch recordBatch(const CacheKey& key, const std::vector<ShadePoint>& cands);
-  void traceRecordRays(const std::vector<ShadePoint>& cands, ProjectBatch& pb, std::vector<Hit>& hits);
+  void traceRecordRays(const std::vector<ShadePoint>& cands, ProjectBatch& rayBatch, std::vector<Hit>& hits);
   // R_i from the harmonic mean distance of its S ray hits, bounded by the gradient limit and
   // r_min/r_max; scales the record's gradients (in place) when r_min overrides the limit.
   RecordInfo clampRecord(const CacheKey& key, const ShadePoint& cand, const Hit* hits, int S, float minDistance,
@@ -147,7 +147,7 @@ class CacheEngine {
   // An interpolate batch's header for `points` points (frames and offsets sized, zero) and the
   // coefficients (and, in record-frame mode, frames) of records `ids` of `cache`.
   InterpolateBatch interpolateBatch(int order, bool world, size_t points) const;
-  void addRecords(const RadianceCache& cache, const std::vector<uint32_t>& ids, InterpolateBatch& ib) const;
+  void addRecords(const RadianceCache& cache, const std::vector<uint32_t>& ids, InterpolateBatch& interp) const;
   void continuePaths(const std::vector<ShadePoint>& pts, std::vector<Color>& out, float relaxedScale);
   void shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, size_t count, int order,
                    const std::vector<float>& lambda, std::vector<Color>& out, const std::vector<size_t>* outIndex);

@@ -7,6 +7,7 @@
 #include "core/parallel.h"
 #include "render/direct_light.h"
 #include "render/render_loop.h"
+#include "scene/integrator_params.h"
 
 namespace rc {
 
@@ -167,7 +168,7 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
         const uint64_t sampleSeed = hashMix(run_.seed, sensorPixel, kSaltFinalSample + si);
         s.prim[i] = run_.primaries.of(filmPos[k], y * W + x, sampleSeed, rays[k], hits[k]);
         ShadePoint& sp = s.prim[i].sp;
-        if (sp.active && !(maxDepth >= 0 && 2 > maxDepth)) {
+        if (sp.active && withinMaxDepth(maxDepth, 2)) {
           const Bsdf& bsdf = *run_.ctx.scene.bsdfs[sp.hit.bsdf];
           sp.lightSamples = params.lightSamples;
           bool lightOnly = false;

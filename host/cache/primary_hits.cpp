@@ -3,6 +3,7 @@
 #include "core/parallel.h"
 #include "render/direct_light.h"
 #include "render/light_sampler.h"
+#include "scene/integrator_params.h"
 
 namespace rc {
 
@@ -11,7 +12,7 @@ Primary PrimaryHits::of(const Vec2& filmPos, int pixel, uint64_t sampleSeed, con
   p.filmPos = filmPos;
   p.sp = engine_.shadePointOf(hit, ray.d, 1, 0, sampleSeed);
   p.sp.pixel = pixel;
-  if (maxDepth_ != 0 && !hideEmitters_) {
+  if (withinMaxDepth(maxDepth_, 1) && !hideEmitters_) {
     if (!hit.valid()) p.Le = ctx_.lights.environment(ray.d);
     else if (hit.emitter >= 0) p.Le = emitted(ctx_.scene, hit, -ray.d);
   }

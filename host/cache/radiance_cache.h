@@ -2,7 +2,7 @@
 // One cache of incoming-radiance records of a single SH order (one "family": e.g. the order-10
 // glossy records of the primary hits, or the order-3 diffuse records of the secondary hits).
 // Records keep Λ and the gradients in the record's own frame (canonical, what the cache file
-// stores) and, in world-frame mode, a world-aligned copy made once at insertion (DESIGN §3).
+// stores) and, in world-frame mode, a world-aligned copy made once at insertion (ARCHITECTURE.md §Kernels).
 // Thread safety: lookups take a shared lock, insertion and radius updates an exclusive one, so
 // lookups may run in parallel with each other and with an insertion on another thread.
 #include <cstdint>
@@ -90,7 +90,6 @@ class RadianceCache {
   // Snapshot access for batching (copy under the shared lock).
   RecordInfo info(uint32_t id) const;
   void copyCoefficients(uint32_t id, bool world, float* lambda, float* gradT, float* gradB) const;
-  bool hasWorldCopies() const { return hasWorld_; }
   // Everything (for the cache file / AOVs): consistent snapshot.
   void snapshot(std::vector<RecordInfo>& infos, std::vector<float>& lambda, std::vector<float>& gradT,
                 std::vector<float>& gradB) const;

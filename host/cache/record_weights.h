@@ -1,5 +1,5 @@
 #pragma once
-// The interpolation criterion of irradiance/radiance caching (DESIGN §2), in one place:
+// The interpolation criterion of irradiance/radiance caching (ARCHITECTURE.md §Conventions), in one place:
 //   w_i(p) = 1 / (‖p − p_i‖/R_i + √(1 − n·n_i)),  contributes when w_i > 1/a_i and record i is
 //   not in front of p: (p − p_i)·(n + n_i)/2 ≥ −ε.
 // Every division is guarded: a point exactly at a record (same normal) gets a large finite

@@ -1,6 +1,6 @@
 #pragma once
 // Every OpenCL call goes through RC_CL_CHECK: a failure becomes rc::Error naming the call text,
-// the error code's symbolic name and file:line (DESIGN §9). Calls that return a handle and
+// the error code's symbolic name and file:line (ARCHITECTURE.md §Conventions). Calls that return a handle and
 // report through an out-parameter use RC_CL_CHECK_ERR on that code.
 #ifndef CL_TARGET_OPENCL_VERSION
 #define CL_TARGET_OPENCL_VERSION 120

@@ -28,7 +28,7 @@ struct DeviceInfo {
 // returns an empty list; other API failures throw.
 std::vector<DeviceInfo> enumerateDevices();
 
-// A parsed --device value (DESIGN §3): "cpu", "opencl", "opencl:P:D", "auto".
+// A parsed --device value (ARCHITECTURE.md §Kernels): "cpu", "opencl", "opencl:P:D", "auto".
 struct DeviceSpec {
   enum Kind { Scalar, OpenClFirst, OpenClIndexed, Auto } kind = Auto;
   int platform = -1, device = -1;

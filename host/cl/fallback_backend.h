@@ -1,8 +1,7 @@
 #pragma once
 // A backend that runs on the OpenCL device and, if the device fails at run time (out of resources,
 // lost device, a failed enqueue), says so once and finishes the render on the scalar references
-// instead of aborting it (issue 7: "an out-of-resources error falls back to the scalar path with
-// one notice"). Used for the default device choice only: an explicit --device opencl keeps failing
+// instead of aborting it: a render that can finish should not be lost to a device limit. Used for the default device choice only: an explicit --device opencl keeps failing
 // loudly. The failed call is redone on the scalar path, so no batch is lost.
 #include <functional>
 #include <memory>

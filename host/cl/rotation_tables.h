@@ -5,7 +5,7 @@
 
 namespace rc::cl {
 
-// Real orthonormal SH with Condon–Shortley phase (DESIGN §2), double, order ≤ 20: out[n²].
+// Real orthonormal SH with Condon–Shortley phase (ARCHITECTURE.md §Conventions), double, order ≤ 20: out[n²].
 void shEvalDouble(int order, double x, double y, double z, double* out);
 
 // Band blocks of the SH rotation matrix for the +90° rotation about x (rotate(f, R) = f∘R⁻¹),

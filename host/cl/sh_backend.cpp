@@ -1,4 +1,4 @@
-// makeShBackend: "cpu" | "opencl" | "opencl:P:D" | "auto" (DESIGN §3), RC_DEVICE when empty.
+// makeShBackend: "cpu" | "opencl" | "opencl:P:D" | "auto" (ARCHITECTURE.md §Kernels), RC_DEVICE when empty.
 #include "cl/sh_backend.h"
 
 #include <cstdlib>

@@ -1,5 +1,5 @@
 #pragma once
-// `rcache verify` and `rcache devices` (DESIGN §3, §5).
+// `rcache verify` and `rcache devices` (ARCHITECTURE.md §Kernels).
 #include <ostream>
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Local shading frame (t, b, n), right-handed, z = normal (DESIGN §2).
+// Local shading frame (t, b, n), right-handed, z = normal (ARCHITECTURE.md §Conventions).
 #include "core/math.h"
 
 namespace rc {

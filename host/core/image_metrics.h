@@ -1,5 +1,5 @@
 #pragma once
-// Image error metrics (DESIGN §7), one definition for the CLI, tests and benchmarks.
+// Image error metrics (ARCHITECTURE.md §Tests and benchmarks), one definition for the CLI, tests and benchmarks.
 // relMSE = mean over pixels and channels of (x − r)² / (r² + 0.01).
 #include <vector>
 

@@ -2,7 +2,7 @@
 // Adaptive sampling, shared by both integrators (--adaptive T, --max-spp N). A pixel's error is
 // estimated from its own samples: after n samples, |mean of all n − mean of the first n/2| is an
 // estimate of the error of the mean of all n (for independent halves its variance is exactly
-// σ²/n). In the DESIGN's relMSE form
+// σ²/n). In the relMSE form of the image metrics (core/image_metrics.h)
 //   e² = mean over RGB of (m_n − m_{n/2})² / (m_n² + 0.01),
 // and a pixel goes on when the largest e² in its (2·kAdaptiveWindow+1)² neighbourhood exceeds T²:
 // it takes as many samples again (its sample indices n … 2n−1, so a low-discrepancy pixel keeps a

@@ -22,7 +22,6 @@ struct RenderOptions {
   uint64_t seed = 0;         // added to the scene sampler's seed
   std::string sampler;       // "" = the scene's <sampler>; else independent | ldsampler
   AdaptiveSettings adaptive; // --adaptive T, --max-spp N (off by default)
-  bool quiet = false;        // no progress bar
   std::vector<std::string> aovs;  // requested AOV names (integrator-specific)
   std::string cacheSave;          // rcache: write the view-independent cache here after rendering
   std::string cacheLoad;          // rcache: start from this cache file

@@ -22,7 +22,8 @@ std::vector<TileRect> makeTiles(int width, int height, int size) {
   return tiles;
 }
 
-}  // namespace
+// Per-tile work: the callback renders the whole tile itself, splatting into `tile`.
+using TileFn = std::function<void(TileFilm& tile)>;
 
 RenderLoopResult renderTiles(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
                              const TileFn& fn) {
@@ -60,6 +61,8 @@ RenderLoopResult renderTiles(const RenderContext& ctx, Film& film, const RenderL
   result.interrupted = interrupted.load();
   return result;
 }
+
+}  // namespace
 
 bool usesLowDiscrepancy(const RenderContext& ctx) {
   const std::string& name = ctx.options.sampler.empty() ? ctx.scene.samplerType : ctx.options.sampler;

@@ -45,14 +45,8 @@ struct SampleInput {
 };
 using SampleFn = std::function<Color(const SampleInput& in, Rng& rng, TileFilm& tile)>;
 
-// Per-tile work for integrators that batch (the cache's final gather): the callback renders the
-// whole tile itself, splatting into `tile`; use pixelRng() for the per-sample streams.
-using TileFn = std::function<void(TileFilm& tile)>;
-
 RenderLoopResult renderSamples(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
                                const SampleFn& fn);
-RenderLoopResult renderTiles(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
-                             const TileFn& fn);
 
 // The RNG of sample `sampleIndex` of pixel (px, py) of an image `width` wide; with lowDiscrepancy
 // its first Rng::kPixelLowDiscrepancyDims draws are the pixel's padded Sobol points.

@@ -10,7 +10,8 @@ namespace rc {
 
 void readPathParams(ParamReader& in, IntegratorSettings& settings);
 
-// Whether a path of `segments` segments is within max_depth (-1: always).
+// Whether a path of `segments` segments is within max_depth (-1: always): the one test of the
+// limit (a shade point at depth d gets direct light over d+1 segments, indirect over d+2).
 inline bool withinMaxDepth(int maxDepth, int segments) { return maxDepth < 0 || segments <= maxDepth; }
 
 }  // namespace rc

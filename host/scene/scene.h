@@ -1,5 +1,5 @@
 #pragma once
-// The in-memory scene after parsing (DESIGN §8): everything in world space, ready for the BVH.
+// The in-memory scene after parsing (ARCHITECTURE.md §Scene format): everything in world space, ready for the BVH.
 #include <cstdint>
 #include <limits>
 #include <map>

@@ -1,5 +1,5 @@
 #pragma once
-// Loads a Mitsuba 3 XML scene (the subset of DESIGN §8) into a Scene.
+// Loads a Mitsuba 3 XML scene (the subset of ARCHITECTURE.md §Scene format) into a Scene.
 #include <map>
 #include <string>
 #include <vector>

@@ -1,9 +1,9 @@
 #pragma once
-// Batched inputs/outputs of the four kernel families (DESIGN §3). These layouts are the contract
+// Batched inputs/outputs of the four kernel families (ARCHITECTURE.md §Kernels). These layouts are the contract
 // shared by the scalar references (host/sh/reference.h), the OpenCL kernels (kernels/*.cl) and
 // the renderer. All arrays are flat, row-major, float32; "[B][3][n2]" means index
 // (b*3 + channel)*n2 + i with i = l(l+1)+m the SH flat index and n2 = order*order.
-// SH basis: real, orthonormal, Condon–Shortley phase (DESIGN §2). Directions are in the local
+// SH basis: real, orthonormal, Condon–Shortley phase (ARCHITECTURE.md §Conventions). Directions are in the local
 // frame (t, b, n) of the record or shading point: x = t, y = b, z = n; θ from z, φ from x.
 #include <cstdint>
 #include <vector>

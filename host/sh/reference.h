@@ -1,5 +1,5 @@
 #pragma once
-// Scalar references of the kernel families (DESIGN §3): plain C++, double accumulation, no code
+// Scalar references of the kernel families (ARCHITECTURE.md §Kernels): plain C++, double accumulation, no code
 // shared with kernels/*.cl. Same contracts as the kernels (host/sh/batches.h). These also serve
 // as the renderer's CPU path (run per item under parallelFor by the scalar backend).
 #include <vector>

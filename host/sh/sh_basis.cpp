@@ -1,4 +1,4 @@
-// Evaluation of the real SH basis (DESIGN §2) by the normalised recurrences:
+// Evaluation of the real SH basis (ARCHITECTURE.md §Conventions) by the normalised recurrences:
 //   P̄_l^m = K_l^m P_l^m / sin^m θ (a polynomial in z = cos θ, Condon–Shortley phase included)
 //   P̄_0^0 = 1/√(4π),  P̄_m^m = −√((2m+1)/(2m)) P̄_{m−1}^{m−1},  P̄_{m+1}^m = √(2m+3) z P̄_m^m,
 //   P̄_l^m = a_lm (z P̄_{l−1}^m − b_lm P̄_{l−2}^m),

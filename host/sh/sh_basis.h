@@ -1,5 +1,5 @@
 #pragma once
-// Real orthonormal spherical harmonics (DESIGN §2): Condon–Shortley phase, flat index
+// Real orthonormal spherical harmonics (ARCHITECTURE.md §Conventions): Condon–Shortley phase, flat index
 // i = l(l+1)+m, order n = bands 0..n-1 (n² values). Stable recurrences, orders 1..20, in float
 // and double. Direction given as a unit vector (x, y, z) in the local frame (θ from z, φ from x).
 #include <vector>

@@ -1,5 +1,5 @@
 /* Device-side SH helpers shared by the kernel families (OpenCL C only; inlined by the host's
- * program assembler). Conventions are DESIGN §2: real orthonormal SH, Condon–Shortley phase,
+ * program assembler). Conventions are ARCHITECTURE.md §Conventions: real orthonormal SH, Condon–Shortley phase,
  * flat index i = l(l+1)+m, rotate(f, R) = coefficients of f(R⁻¹ω).
  * Needs RC_ORDER (compile-time SH order) defined before inclusion. */
 #ifndef RC_SH_DEVICE_H

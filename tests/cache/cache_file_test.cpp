@@ -1,4 +1,4 @@
-// Cache-file reader on hostile input (issue 7): counts that promise more data than the file holds
+// Cache-file reader on hostile input: counts that promise more data than the file holds
 // and non-finite record values give an rc::Error naming the file, never a huge allocation or a
 // record that poisons interpolation. Files carry a valid checksum and scene hash, so the checks
 // behind those gates are what is tested.

@@ -96,7 +96,6 @@ inline RenderResult renderScene(const Scene& scene, const IntegratorSettings& se
   RenderOptions opt;
   opt.spp = spp;
   opt.seed = seed;
-  opt.quiet = true;
   opt.cacheSave = cacheSave;
   opt.cacheLoad = cacheLoad;
   opt.aovs = aovs;

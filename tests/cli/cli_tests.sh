@@ -2,13 +2,7 @@
 # End-to-end CLI tests: exit codes, messages (file:line), outputs written whole or not at all.
 # Usage: cli_tests.sh path/to/rcache  (run by CTest, label "cli")
 set -uo pipefail
-RC=$1
-DATA=$(cd "$(dirname "$0")/data" && pwd)
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-fails=0
-pass() { echo "PASS $1"; }
-fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
+source "$(dirname "$0")/common.sh"
 
 # expect_error NAME EXPECTED_SUBSTRING -- args...
 expect_error() {

@@ -5,13 +5,7 @@
 # the same estimator with the same seed writes the same file.
 # Usage: integrator_tests.sh path/to/rcache  (run by CTest, label "cli")
 set -uo pipefail
-RC=$1
-DATA=$(cd "$(dirname "$0")/data" && pwd)
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-fails=0
-pass() { echo "PASS $1"; }
-fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
+source "$(dirname "$0")/common.sh"
 render() {  # output name, then arguments
   local out=$1; shift
   "$RC" "$@" --quiet --seed 3 -t 2 -o "$TMP/$out.exr" 2> "$TMP/$out.err"

@@ -1,4 +1,4 @@
-// Deterministic mutation fuzzing of the scene loader and the OBJ/PLY readers (issue 7).
+// Deterministic mutation fuzzing of the scene loader and the OBJ/PLY readers: bad input gets one message, never a crash or hang.
 //
 // Every shipped scene (scenes/*.xml, scenes/stress/*.xml, tests/cli/data/*.xml) and a few small
 // OBJ/PLY files are mutated with a fixed seed (byte flips, truncation, duplicated/deleted lines,

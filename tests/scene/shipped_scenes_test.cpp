@@ -11,7 +11,7 @@ TEST(ShippedScenes, EveryXmlLoads) {
   std::vector<std::string> files;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(root))
     if (entry.is_regular_file() && entry.path().extension() == ".xml") files.push_back(entry.path().string());
-  ASSERT_GE(files.size(), 6u) << "scenes/ should ship the scenes DESIGN §6 lists";
+  ASSERT_GE(files.size(), 6u) << "scenes/ should ship the scenes README lists";
   for (const std::string& f : files) {
     SCOPED_TRACE(f);
     std::vector<std::string> warnings;
