@@ -53,7 +53,10 @@ def _substitute(text, params):
 
 def film_of(scene_path, defines):
     """(width, height, border px) of the scene's film; border = the reconstruction filter's reach."""
-    root = ET.parse(scene_path).getroot()
+    try:
+        root = ET.parse(scene_path).getroot()
+    except ET.ParseError as e:
+        raise RuntimeError("%s: %s" % (scene_path, e))
     params = {d.get("name"): d.get("value") for d in root.iter("default")}
     params.update(defines)
     film = root.find("./sensor/film")
@@ -335,4 +338,9 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    try:
+        main(sys.argv[1:])
+    except (RuntimeError, OSError, ValueError) as e:
+        # One line, as rcache itself reports: a failed rcache run names its arguments and message.
+        sys.stderr.write("rcache_dask: error: %s\n" % e)
+        sys.exit(1)
