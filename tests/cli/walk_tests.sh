@@ -3,7 +3,8 @@
 # hdrfilm crop parameters, --frames with --camera-path (files, one shared cache growing frame by
 # frame), `rcache cache merge` (order independence, refusal of other scenes), and their errors.
 # Usage: walk_tests.sh path/to/rcache  (run by CTest, label "cli")
-source "$(dirname "$0")/test_lib.sh"
+set -uo pipefail
+source "$(dirname "$0")/common.sh"
 json_num() {  # file, key: the first number of "key": N
   grep -o "\"$2\": [-0-9.e+]*" "$1" | head -1 | sed 's/.*: //'
 }
