@@ -6,7 +6,7 @@
     (after `--`: more rcache arguments, e.g. -- --spp 64 --integrator path)
 
 Pipeline (rcache integrator): a distributed fill (every task fills the cache for its tile or its
-chunk of frames at 1 spp and saves its records), `rcache cache merge` of the parts (de-duplicated,
+chunk of frames at 1 spp and saves its records; a walk's chunks all start from frame 0's records), `rcache cache merge` of the parts (de-duplicated,
 radii clamped across parts, the same file whatever the order), then the final pass of every tile
 or frame with the merged cache loaded, and (stills) the tiles assembled into one EXR. Other
 integrators (path) skip fill and merge.
@@ -116,14 +116,16 @@ def _attempt_name(path):
     return "%s.attempt-%s%s" % (stem, uuid.uuid4().hex[:8], ext)
 
 
-def fill_task(rcache, scene, crop, frames, workdir, name, extra):
-    """Fills the cache for a crop window (stills) or a chunk of frames (walks) at 1 spp; returns
-    the part's cache file."""
+def fill_task(rcache, scene, crop, frames, workdir, name, extra, base=None):
+    """Fills the cache for a crop window (stills) or a chunk of frames (walks) at 1 spp, on top of
+    the records of `base` if given; returns the part's cache file."""
     _log_attempt(workdir, name)
     part = os.path.join(workdir, name + ".rcc")
     tmp = _attempt_name(part)
     out = os.path.join(workdir, _attempt_name(name + "_fill.exr"))
     args = [scene, "--quiet", "--spp", "1", "--cache-save", tmp, "-o", out] + extra
+    if base:
+        args += ["--cache-load", base] + ([] if frames else ["--cache-reuse"])
     if crop:
         args += ["--crop", "%d,%d,%d,%d" % crop]
     if frames:
@@ -264,12 +266,18 @@ def render_walk(client, rcache, scene, output, workdir, frames, camera_path, chu
     cache = None
     if uses_cache(rcache, scene, extra):
         chunks = max(1, min(chunks, frames))
+        # Frame 0's records first, loaded by every chunk: what the chunks' views share is made once
+        # (the merge drops the copies as exact duplicates) instead of once per chunk.
+        base = None
+        if chunks > 1:
+            first = {"count": frames, "path": camera_path, "first": 0, "end": 1}
+            base = client.submit(fill_task, rcache, scene, None, first, workdir, "fill_base", extra, pure=False)
         parts = []
         for c in range(chunks):
             chunk = {"count": frames, "path": camera_path, "first": frames * c // chunks,
                      "end": frames * (c + 1) // chunks}
             parts.append(client.submit(fill_task, rcache, scene, None, chunk, workdir, "fill_frames%d" % c, extra,
-                                       pure=False))
+                                       base, pure=False))
         times.wait("fill", parts)
         cache = client.submit(merge_task, rcache, parts, os.path.join(workdir, "merged.rcc"), workdir, pure=False)
         times.wait("merge", [cache])
