@@ -6,7 +6,11 @@
     (after `--`: more rcache arguments, e.g. -- --spp 64 --integrator path)
 
 Pipeline (rcache integrator): a distributed fill (every task fills the cache for its tile or its
-chunk of frames at 1 spp and saves its records; a walk's chunks all start from frame 0's records), `rcache cache merge` of the parts (de-duplicated,
+chunk of frames at 1 spp and saves its records; a walk's chunks all start from frame 0's records,
+so what the chunks' views share is made once; `--fill checkerboard` does the same for a still's
+tile borders — half the tiles first, the others from their records — 26 % fewer records at 512²; not
+the default yet: the 48² seam test flagged one border column at 4.2 sigma with it (none above 1.1
+sigma at 96²), which needs more seeds to call), `rcache cache merge` of the parts (de-duplicated,
 radii clamped across parts, the same file whatever the order), then the final pass of every tile
 or frame with the merged cache loaded, and (stills) the tiles assembled into one EXR. Other
 integrators (path) skip fill and merge.
@@ -147,7 +151,7 @@ def _frame_outputs(out, frames):
 
 
 def merge_task(rcache, parts, output, workdir):
-    _log_attempt(workdir, "merge")
+    _log_attempt(workdir, "merge_" + os.path.splitext(os.path.basename(output))[0])
     tmp = _attempt_name(output)
     _run(rcache, ["cache", "merge"] + sorted(parts) + ["-o", tmp, "--quiet"])
     os.replace(tmp, output)
@@ -240,14 +244,27 @@ class _PhaseTimes:
         self.mark(phase)
 
 
-def render_still(client, rcache, scene, output, workdir, tiles_x, tiles_y, extra, defines):
+def render_still(client, rcache, scene, output, workdir, tiles_x, tiles_y, extra, defines, fill="independent"):
+    """fill: "independent" (every tile fills from an empty cache: fully parallel, but both sides of a
+    tile border make records there) or "checkerboard" (the "black" tiles first; the others start from
+    their merged records, so borders get records once, at the price of two rounds)."""
     width, height, border = film_of(scene, defines)
     tiles = make_tiles(width, height, tiles_x, tiles_y, border)
     times = _PhaseTimes()
     cache = None
     if uses_cache(rcache, scene, extra):
-        parts = [client.submit(fill_task, rcache, scene, t["crop"], None, workdir, "fill_tile%d" % t["index"], extra,
-                               pure=False) for t in tiles]
+        def fill_tile(t, base=None):
+            return client.submit(fill_task, rcache, scene, t["crop"], None, workdir, "fill_tile%d" % t["index"], extra,
+                                 base, pure=False)
+        if fill == "checkerboard" and len(tiles) > 1:
+            black = [t for t in tiles if (t["index"] % tiles_x + t["index"] // tiles_x) % 2 == 0]
+            white = [t for t in tiles if t not in black]
+            black_parts = [fill_tile(t) for t in black]
+            base = client.submit(merge_task, rcache, black_parts, os.path.join(workdir, "black.rcc"), workdir,
+                                 pure=False)
+            parts = black_parts + [fill_tile(t, base) for t in white]
+        else:
+            parts = [fill_tile(t) for t in tiles]
         times.wait("fill", parts)
         cache = client.submit(merge_task, rcache, parts, os.path.join(workdir, "merged.rcc"), workdir, pure=False)
         times.wait("merge", [cache])
@@ -302,6 +319,8 @@ def parse_args(argv):
     p.add_argument("--scheduler", help="address of a running dask scheduler (tcp://host:8786)")
     p.add_argument("--local", type=int, default=0, help="start a local cluster of N worker processes instead")
     p.add_argument("--tiles", default="2x2", help="still: tiles across x down (default 2x2)")
+    p.add_argument("--fill", choices=["independent", "checkerboard"], default="independent",
+                   help="still: how tiles fill the cache (see render_still)")
     p.add_argument("--frames", type=int, default=0)
     p.add_argument("--camera-path")
     p.add_argument("--fill-chunks", type=int, default=0, help="walk: fill tasks (default: one per worker)")
@@ -332,7 +351,7 @@ def main(argv):
         workers = max(1, len(client.scheduler_info()["workers"]))
         if a.mode == "still":
             tx, ty = (int(v) for v in a.tiles.lower().split("x"))
-            info = render_still(client, rcache, scene, output, workdir, tx, ty, a.extra, defines)
+            info = render_still(client, rcache, scene, output, workdir, tx, ty, a.extra, defines, a.fill)
         else:
             if a.frames <= 0 or not a.camera_path:
                 raise SystemExit("walk: --frames N and --camera-path are required")
