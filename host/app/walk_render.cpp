@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <utility>
 
 #include "core/json_writer.h"
 #include "core/timing.h"
@@ -11,28 +12,31 @@
 
 namespace rc {
 
-std::string frameOutputPath(const std::string& output, int frame) {
-  const size_t slash = output.find_last_of('/');
-  const size_t dot = output.find_last_of('.');
-  const bool hasExt = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-  char num[16];
-  std::snprintf(num, sizeof num, "_%04d", frame);
-  return hasExt ? output.substr(0, dot) + num + output.substr(dot) : output + num;
-}
-
 namespace {
+
+// "dir/name.exr" → {"dir/name", ".exr"}; no extension → {path, ""}.
+std::pair<std::string, std::string> splitExtension(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {path, ""};
+  return {path.substr(0, dot), path.substr(dot)};
+}
 
 // The cache the frames share: --cache-save F if given (it then holds every frame's records at the
 // end), else a file beside the frames that is removed afterwards.
 std::string sharedCachePath(const WalkJob& job) {
   if (!job.args.cacheSave.empty()) return job.args.cacheSave;
-  const size_t dot = job.output.find_last_of('.');
-  const size_t slash = job.output.find_last_of('/');
-  const bool hasExt = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-  return (hasExt ? job.output.substr(0, dot) : job.output) + "_walk.rcc";
+  return splitExtension(job.output).first + "_walk.rcc";
 }
 
 }  // namespace
+
+std::string frameOutputPath(const std::string& output, int frame) {
+  char num[16];
+  std::snprintf(num, sizeof num, "_%04d", frame);
+  const auto [stem, ext] = splitExtension(output);
+  return stem + num + ext;
+}
 
 RenderStats renderWalk(const WalkJob& job) {
   const RenderArgs& ra = job.args;
