@@ -7,3 +7,9 @@ set_tests_properties(cli_merl PROPERTIES LABELS cli TIMEOUT 120)
 # Integrator selection end to end: --integrator, auto, Mitsuba aliases, nested wrappers, -D routing.
 add_test(NAME cli_integrators COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/integrator_tests.sh $<TARGET_FILE:rcache>)
 set_tests_properties(cli_integrators PROPERTIES LABELS cli TIMEOUT 120)
+# Crop windows, walk-throughs with a shared cache and cache merging (issue 20).
+add_test(NAME cli_walk COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/walk_tests.sh $<TARGET_FILE:rcache>)
+set_tests_properties(cli_walk PROPERTIES LABELS cli TIMEOUT 120)
+# The Dask driver on a local two-worker cluster: tiled stills, a killed worker, an animation (issue 20).
+add_test(NAME dask_driver COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/dask/dask_driver_test.py $<TARGET_FILE:rcache>)
+set_tests_properties(dask_driver PROPERTIES LABELS dask TIMEOUT 300)
