@@ -4,7 +4,8 @@
 set -euo pipefail
 packages=(cmake g++ make pkg-config libembree-dev libopenimageio-dev libopenexr-dev libpugixml-dev libglm-dev zlib1g-dev
           ocl-icd-opencl-dev opencl-headers pocl-opencl-icd clinfo libgtest-dev libbenchmark-dev
-          clang libclang-rt-14-dev)
+          clang libclang-rt-14-dev
+          python3-distributed python3-numpy python3-openimageio)  # the Dask driver (scripts/rcache_dask.py) and its tests
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -10,3 +10,9 @@ set_tests_properties(cli_integrators PROPERTIES LABELS cli TIMEOUT 120)
 # Hostile inputs (issue 19): crashes, hangs, unbounded memory and lost output, each under limits.
 add_test(NAME cli_hostile COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/hostile_tests.sh $<TARGET_FILE:rcache>)
 set_tests_properties(cli_hostile PROPERTIES LABELS cli TIMEOUT 600)
+# Crop windows, walk-throughs with a shared cache and cache merging (issue 20).
+add_test(NAME cli_walk COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/walk_tests.sh $<TARGET_FILE:rcache>)
+set_tests_properties(cli_walk PROPERTIES LABELS cli TIMEOUT 120)
+# The Dask driver on a local two-worker cluster: tiled stills, a killed worker, an animation (issue 20).
+add_test(NAME dask_driver COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/dask/dask_driver_test.py $<TARGET_FILE:rcache>)
+set_tests_properties(dask_driver PROPERTIES LABELS dask TIMEOUT 300)

@@ -10,11 +10,13 @@
 #include <sstream>
 
 #include "app/cli_args.h"
+#include "app/cache_command.h"
 #include "app/diff_command.h"
 #include "app/integrator_registry.h"
 #include "app/output_checks.h"
 #include "app/progress_bar.h"
 #include "app/stats_report.h"
+#include "app/walk_render.h"
 #include "cl/sh_backend.h"
 #include "cl/verify.h"
 #include "core/atomic_file.h"
@@ -131,6 +133,7 @@ int runRender(const std::vector<std::string>& args) {
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
   const double loadS = secondsSince(tStart);
   if (gCancel) return 128 + gSignal.load();  // stopped while loading: nothing rendered to keep
+  applyCropFlag(ra.crop, scene.film);
   const IntegratorEntry* entry = nullptr;
   std::unique_ptr<Integrator> integrator = integratorFor(ra, scene, entry);
 
@@ -156,9 +159,18 @@ int runRender(const std::vector<std::string>& args) {
   opts.aovs = ra.aovs;
   opts.cacheSave = ra.cacheSave;
   opts.cacheLoad = ra.cacheLoad;
+  opts.cacheReuse = ra.cacheReuse;
   RenderContext ctx{scene, accel, lights, opts, backend.get(), &gCancel,
                     [&bar](const std::string& phase, double done, double total) { bar.update(phase, done, total); }};
 
+  if (ra.frames > 0) {
+    stats = renderWalk({ra, output, scene, ctx, *integrator, bar});
+    stats.setText("scene", ra.scenePath);
+    stats.set("time_s", secondsSince(tStart));
+    if (!ra.quiet) printStats(stats, std::cout);
+    if (!ra.statsPath.empty()) writeFileAtomically(ra.statsPath, statsToJson(stats));
+    return gCancel ? 128 + gSignal.load() : 0;
+  }
   const auto tRender = SteadyClock::now();
   Image image = integrator->render(ctx, stats);
   const double renderS = secondsSince(tRender);
@@ -214,6 +226,7 @@ int runCli(int argc, char** argv) {
       return runVerify(v.device, v.order, std::cout);
     }
     if (cmd == "diff") return runDiff(parseDiffArgs(rest), std::cout);
+    if (cmd == "cache") return runCacheCommand(rest, std::cout);
     return runRender(args);
   } catch (const Error& e) {
     std::cerr << "rcache: error: " << e.what() << "\n";

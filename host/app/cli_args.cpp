@@ -15,7 +15,10 @@ const char* usageText() {
          "                   [--spp N] [--device cpu|opencl|opencl:P:D] [-t THREADS] [--seed S] [--quiet]\n"
          "                   [--sampler independent|ldsampler] [--adaptive T] [--max-spp N]\n"
          "                   [--stats out.json] [--aov records,radius,technique,contributors]\n"
-         "                   [--cache-save F] [--cache-load F] [--lenient]\n"
+         "                   [--cache-save F] [--cache-load F [--cache-reuse]] [--lenient]\n"
+         "                   [--crop X,Y,W,H] [--frames N --camera-path keys.json\n"
+         "                   [--frame-range A,B] [--fresh-frames]]\n"
+         "  rcache cache merge A.rcc B.rcc... -o C.rcc   one cache file of several (deduplicated)\n"
          "  rcache devices                       list OpenCL platforms and devices\n"
          "  rcache verify [--device D] [--order N]   kernels vs scalar reference\n"
          "  rcache diff A B [--json] [--heatmap out.png]   RMSE, relMSE, max abs error\n";
@@ -125,6 +128,22 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
       r.cacheSave = cur.value(a);
     } else if (a == "--cache-load") {
       r.cacheLoad = cur.value(a);
+    } else if (a == "--crop") {
+      r.crop = parseCropFlag(cur.value(a));
+    } else if (a == "--frames") {
+      r.frames = static_cast<int>(parseInteger(a, cur.value(a), 1, 100000));
+    } else if (a == "--camera-path") {
+      r.cameraPath = cur.value(a);
+    } else if (a == "--cache-reuse") {
+      r.cacheReuse = true;
+    } else if (a == "--fresh-frames") {
+      r.freshFrames = true;
+    } else if (a == "--frame-range") {
+      const std::string v = cur.value(a);
+      const size_t comma = v.find(',');
+      if (comma == std::string::npos) throw Error("--frame-range: expected A,B (frames A..B-1), got '" + v + "'");
+      r.firstFrame = static_cast<int>(parseInteger(a, v.substr(0, comma), 0, 99999));
+      r.endFrame = static_cast<int>(parseInteger(a, v.substr(comma + 1), 1, 100000));
     } else if (!a.empty() && a[0] == '-') {
       throw Error("unknown option '" + a + "'");
     } else if (r.scenePath.empty()) {
@@ -134,6 +153,11 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
     }
   }
   if (r.scenePath.empty()) throw Error("no scene file given");
+  if ((r.frames > 0) != !r.cameraPath.empty()) throw Error("--frames and --camera-path go together");
+  if (r.freshFrames && r.frames == 0) throw Error("--fresh-frames: only with --frames N");
+  if (r.endFrame > 0 && (r.frames == 0 || r.firstFrame >= r.endFrame || r.endFrame > r.frames))
+    throw Error("--frame-range: A,B needs --frames N and 0 <= A < B <= N");
+  if (r.cacheReuse && r.cacheLoad.empty()) throw Error("--cache-reuse: only with --cache-load F");
   if (r.maxSpp > 0 && r.adaptiveThreshold <= 0.0f) throw Error("--max-spp: only with --adaptive T");
   if (r.maxSpp > 0 && r.spp > 0 && r.maxSpp < r.spp)
     throw Error("--max-spp: " + std::to_string(r.maxSpp) + " is below --spp " + std::to_string(r.spp));

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "app/crop_flag.h"
+
 namespace rc {
 
 struct RenderArgs {
@@ -25,6 +27,12 @@ struct RenderArgs {
   std::string statsPath;
   std::vector<std::string> aovs;
   std::string cacheSave, cacheLoad;
+  CropFlag crop;                               // --crop X,Y,W,H
+  int frames = 0;                              // --frames N with --camera-path (0 = a still)
+  std::string cameraPath;                      // --camera-path keyframes.json
+  bool cacheReuse = false;                     // --cache-reuse: fill on top of --cache-load
+  bool freshFrames = false;                    // --fresh-frames: no cache shared across frames
+  int firstFrame = 0, endFrame = 0;            // --frame-range A,B: frames A..B−1 only (0,0 = all)
 };
 
 struct DiffArgs {

@@ -111,6 +111,11 @@ void saveCacheFile(const std::string& path, uint64_t sceneHash, const std::vecto
 }
 
 std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expectedSceneHash) {
+  return loadCacheFile(path, &expectedSceneHash, nullptr);
+}
+
+std::vector<CacheFileEntry> loadCacheFile(const std::string& path, const uint64_t* expectedSceneHash,
+                                          uint64_t* sceneHash) {
   requireRegularFile(path, "cache file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot open cache file");
@@ -127,7 +132,9 @@ std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expe
   if (version != kCacheFileVersion)
     throw Error(path + ": cache file version " + std::to_string(version) + ", this build reads version " +
                 std::to_string(kCacheFileVersion));
-  if (r.get<uint64_t>() != expectedSceneHash)
+  const uint64_t fileSceneHash = r.get<uint64_t>();
+  if (sceneHash) *sceneHash = fileSceneHash;
+  if (expectedSceneHash && fileSceneHash != *expectedSceneHash)
     throw Error(path + ": cache file was made for another scene (geometry, materials, lights or max_depth differ)");
   const uint32_t count = r.get<uint32_t>();
   // Counts are checked against the bytes left before anything is allocated: a damaged (or

@@ -33,6 +33,10 @@ uint64_t cacheSceneHash(const Scene& scene, int maxDepth, bool tlMode);
 void saveCacheFile(const std::string& path, uint64_t sceneHash, const std::vector<CacheFileEntry>& entries);
 // Throws rc::Error("<path>: ...") on any problem.
 std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expectedSceneHash);
+// The same without a scene (rcache cache merge): any scene hash is accepted (null expected) and
+// returned in *sceneHash.
+std::vector<CacheFileEntry> loadCacheFile(const std::string& path, const uint64_t* expectedSceneHash,
+                                          uint64_t* sceneHash);
 
 // Phase 1b of an rcache render (--cache-load): inserts every record of the file into the engine's
 // caches as it is (the file holds final, already clamped radii), with world-frame copies when

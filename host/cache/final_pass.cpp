@@ -153,8 +153,11 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
       const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
       for (int si = ranges[q].first; si < ranges[q].end; ++si) {
         const size_t k = offset[q] + (si - ranges[q].first) - first;
-        rngs.push_back(pixelRng(run_.seed, W, x, y, si, run_.lowDiscrepancy));
-        filmPos[k] = Vec2(static_cast<float>(x), static_cast<float>(y)) + rngs[k].next2D();
+        // Streams keyed by the sensor pixel: a crop window draws what the full render draws there.
+        rngs.push_back(pixelRng(run_.seed, film_.sensorWidth(), film_.cropX() + x, film_.cropY() + y, si,
+                                run_.lowDiscrepancy));
+        const Vec2 crop(static_cast<float>(film_.cropX()), static_cast<float>(film_.cropY()));
+        filmPos[k] = Vec2(static_cast<float>(x), static_cast<float>(y)) + crop + rngs[k].next2D() - crop;
         rays[k] = run_.camera.generate(filmPos[k]);
       }
     }
@@ -168,7 +171,8 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
         const size_t i = offset[q] + (si - ranges[q].first), k = i - first;
         s.sampleIndex[i] = si;
         Rng& rng = rngs[k];
-        const uint64_t sampleSeed = hashMix(run_.seed, static_cast<uint64_t>(y) * W + x, kSaltFinalSample + si);
+        const uint64_t sensorPixel = static_cast<uint64_t>(film_.cropY() + y) * film_.sensorWidth() + film_.cropX() + x;
+        const uint64_t sampleSeed = hashMix(run_.seed, sensorPixel, kSaltFinalSample + si);
         s.prim[i] = run_.primaries.of(filmPos[k], y * W + x, sampleSeed, rays[k], hits[k]);
         ShadePoint& sp = s.prim[i].sp;
         if (sp.active && withinMaxDepth(maxDepth, 2)) {

@@ -79,7 +79,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   const int spp = ctx.options.spp > 0 ? ctx.options.spp : scene.sampleCount;
   // Before the fill, not after it: the final pass's smallest batch is one film row of spp samples.
   checkFinalPassMemory(static_cast<size_t>(film.width()) * static_cast<size_t>(spp), film.width(), spp);
-  const CameraModel camera(scene.camera, film.width(), film.height());
+  const CameraModel camera(scene.camera, scene.film);
   Vec3 lo, hi;
   finiteSceneBounds(scene, lo, hi);
   CacheEngine engine(ctx, params_, tables, camera, settings_.maxDepth, settings_.rrDepth, lo, hi);
@@ -105,7 +105,10 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
 
   const size_t recordsLoaded = ctx.options.cacheLoad.empty() ? 0
       : loadCachesInto(engine, ctx.options.cacheLoad, sceneHash, params_.worldFrame, backend);
-  const FillReport fill = ctx.options.cacheLoad.empty() ? fillCache(run) : FillReport{};
+  // --cache-reuse (walk-throughs, distributed fills): the loaded records stay as they are and the
+  // fill adds records only where this view finds none.
+  const bool fillNeeded = ctx.options.cacheLoad.empty() || ctx.options.cacheReuse;
+  const FillReport fill = fillNeeded ? fillCache(run) : FillReport{};
   bool interrupted = fill.interrupted;
 
   const auto finalStart = SteadyClock::now();

@@ -46,6 +46,7 @@ void reportRecords(const RcacheRun& run, const RcacheReport& r, RenderStats& sta
   stats.set("records", double(records));
   stats.set("records_primary", double(level0));
   stats.set("records_loaded", double(r.recordsLoaded));
+  stats.set("records_added", double(records) - double(r.recordsLoaded));
   stats.set("records_glossy", double(glossyRecords));
   stats.setJson("caches", caches.str());
 }
@@ -116,7 +117,7 @@ std::string skippedWork(const RcacheRun& run) {
   }
   if (!anyGlossy) skipped += "no glossy material: no glossy radiance cache, no glossy BRDF tables; ";
   if (!anyCached) skipped += "no cached material: no BRDF tables, no records; ";
-  if (!run.ctx.options.cacheLoad.empty())
+  if (!run.ctx.options.cacheLoad.empty() && !run.ctx.options.cacheReuse)
     skipped += "cache fill passes (cache loaded from " + run.ctx.options.cacheLoad + "); ";
   return skipped.empty() ? "nothing" : skipped;
 }

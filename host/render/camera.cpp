@@ -38,7 +38,12 @@ CameraModel::CameraModel(const Camera& camera, int width, int height)
   forward_ = glm::normalize(Vec3(toWorld_ * Vec4(0, 0, 1, 0)));
 }
 
-Ray CameraModel::generate(Vec2 filmPos) const {
+CameraModel::CameraModel(const Camera& camera, const FilmSettings& film) : CameraModel(camera, film.width, film.height) {
+  cropOffset_ = Vec2(static_cast<float>(film.cropX), static_cast<float>(film.cropY));
+}
+
+Ray CameraModel::generate(Vec2 cropPos) const {
+  const Vec2 filmPos = cropPos + cropOffset_;
   // Mitsuba 3 perspective_projection: sample x = 0.5·(1 − x_ndc), y = 0.5·(1 − aspect·y_ndc) with
   // x_ndc = x/(z·tan(fov_x/2)); so image left (u = 0) is local +x and image top is local +y.
   const float sx = filmPos.x / static_cast<float>(width_) + principalPointOffset_.x;

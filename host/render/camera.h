@@ -11,12 +11,14 @@ namespace rc {
 class CameraModel {
  public:
   CameraModel(const Camera& camera, int width, int height);
+  // The sensor of `film`; film positions are then in pixels of its crop window (the image).
+  CameraModel(const Camera& camera, const FilmSettings& film);
 
   // Primary ray through a film position in pixels, (0,0) = top-left corner of the image,
-  // (width, height) = bottom-right. Direction is unit, tMin/tMax from near/far clip along it.
+  // (width, height) = bottom-right (of the crop window, which lies at cropOffset on the sensor). Direction is unit, tMin/tMax from near/far clip along it.
   Ray generate(Vec2 filmPos) const;
 
-  // World-space size of one pixel on a plane facing the camera at `distance` along the view axis.
+  // World-space size of one sensor pixel (the same with or without a crop window) on a plane facing the camera at `distance` along the view axis.
   float pixelFootprint(float distance) const;
 
   float fovXDegrees() const { return fovX_; }
@@ -26,7 +28,8 @@ class CameraModel {
  private:
   Mat4 toWorld_;
   Vec3 origin_, forward_;
-  int width_, height_;
+  int width_, height_;  // the sensor
+  Vec2 cropOffset_{0.0f};
   float fovX_;        // horizontal field of view in degrees (fov_axis already resolved)
   float tanHalfX_;    // tan(fovX/2): half-width of the image plane at z = 1
   float tanHalfY_;    // half-height at z = 1

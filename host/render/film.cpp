@@ -100,9 +100,14 @@ void TileFilm::addAov(const std::string& name, int px, int py, const Color& valu
   a.count[i] += 1;
 }
 
-Film::Film(const FilmSettings& settings) : Film(settings, settings.width, settings.height) {}
+Film::Film(const FilmSettings& settings) : Film(settings, settings.imageWidth(), settings.imageHeight()) {
+  cropX_ = settings.cropX;
+  cropY_ = settings.cropY;
+  sensorWidth_ = settings.width;
+}
 
-Film::Film(const FilmSettings& settings, int width, int height) : filter_(settings), width_(width), height_(height) {
+Film::Film(const FilmSettings& settings, int width, int height)
+    : filter_(settings), width_(width), height_(height), sensorWidth_(width) {
   if (width <= 0 || height <= 0) throw Error("film: width and height must be positive");
   sum_.assign(static_cast<size_t>(width) * height * 4, 0.0);
 }

@@ -57,11 +57,16 @@ class TileFilm {
 
 class Film {
  public:
-  explicit Film(const FilmSettings& settings);
-  Film(const FilmSettings& settings, int width, int height);  // override resolution (tests, crops)
+  explicit Film(const FilmSettings& settings);  // the crop window's size (the sensor's without one)
+  Film(const FilmSettings& settings, int width, int height);  // override resolution (tests)
 
   int width() const { return width_; }
   int height() const { return height_; }
+  // Where the image lies on the sensor (a crop window; 0, 0 and the image size otherwise). Pixel
+  // sample streams are keyed by the sensor pixel, so a crop equals the same window of a full render.
+  int cropX() const { return cropX_; }
+  int cropY() const { return cropY_; }
+  int sensorWidth() const { return sensorWidth_; }
   const ReconstructionFilter& filter() const { return filter_; }
 
   TileFilm makeTile(int x0, int y0, int x1, int y1) const;
@@ -77,6 +82,7 @@ class Film {
  private:
   ReconstructionFilter filter_;
   int width_, height_;
+  int cropX_ = 0, cropY_ = 0, sensorWidth_ = 0;
   std::vector<double> sum_;  // width*height*4
   struct AovAccum { std::vector<double> sum; std::vector<uint32_t> count; };
   std::map<std::string, AovAccum> aovs_;

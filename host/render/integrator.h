@@ -25,6 +25,7 @@ struct RenderOptions {
   std::vector<std::string> aovs;  // requested AOV names (integrator-specific)
   std::string cacheSave;          // rcache: write the view-independent cache here after rendering
   std::string cacheLoad;          // rcache: start from this cache file
+  bool cacheReuse = false;        // rcache: with cacheLoad, still fill (adds records where none serve)
 };
 
 // Named statistics, printed in insertion order and written to --stats JSON.

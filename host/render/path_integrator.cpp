@@ -85,7 +85,7 @@ class PathIntegrator final : public Integrator {
     const auto start = std::chrono::steady_clock::now();
     const uint64_t rays0 = ctx.accel.raysTraced();
     Film film(ctx.scene.film);
-    const CameraModel camera(ctx.scene.camera, film.width(), film.height());
+    const CameraModel camera(ctx.scene.camera, ctx.scene.film);
     RenderLoopSettings loop;
     loop.spp = ctx.options.spp > 0 ? ctx.options.spp : ctx.scene.sampleCount;
     if (loop.spp <= 0) throw Error("sampler: sample_count must be positive");

@@ -105,12 +105,17 @@ RenderLoopResult sampleLoop(const RenderContext& ctx, Film& film, const RenderLo
         inputs.clear();
         for (; px < tile.x1() && inputs.size() < kChunkSamples; ++px)
           for (int s = ranges[row + px].first; s < ranges[row + px].end; ++s) {
-            rngs.push_back(pixelRng(settings.seed, width, px, py, s, settings.lowDiscrepancy));
+            rngs.push_back(pixelRng(settings.seed, film.sensorWidth(), film.cropX() + px, film.cropY() + py, s,
+                                    settings.lowDiscrepancy));
             SampleInput in;
             in.px = px;
             in.py = py;
             in.sampleIndex = s;
-            in.filmPos = Vec2(static_cast<float>(px), static_cast<float>(py)) + rngs.back().next2D();
+            // Jittered on the sensor, then moved into the crop window: exact, so the camera, which
+            // moves it back, sees the bits a full render sees.
+            const Vec2 onSensor = Vec2(static_cast<float>(film.cropX() + px), static_cast<float>(film.cropY() + py)) +
+                                  rngs.back().next2D();
+            in.filmPos = onSensor - Vec2(static_cast<float>(film.cropX()), static_cast<float>(film.cropY()));
             inputs.push_back(in);
           }
         const size_t n = inputs.size();

@@ -64,10 +64,15 @@ struct Camera {
 };
 
 struct FilmSettings {
-  int width = 768, height = 576;
+  int width = 768, height = 576;    // the full sensor
   std::string filter = "gaussian";  // box | tent | gaussian
   float gaussianStddev = 0.5f;
   float tentRadius = 1.0f;
+  // Crop window (Mitsuba's hdrfilm crop_offset_x/y, crop_width/height): only this window of the
+  // sensor is rendered and the image has its size. cropWidth/Height 0 = the whole sensor.
+  int cropX = 0, cropY = 0, cropWidth = 0, cropHeight = 0;
+  int imageWidth() const { return cropWidth > 0 ? cropWidth : width; }
+  int imageHeight() const { return cropHeight > 0 ? cropHeight : height; }
 };
 
 // Integrator block; `params` keeps every parameter of <integrator> (and -D overrides are already

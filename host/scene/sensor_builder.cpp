@@ -29,6 +29,25 @@ void buildRfilter(Loader& loader, const Element& e, FilmSettings& film) {
   loader.checkUnused(e);
 }
 
+// Mitsuba 3 (Film::Film, set_crop_window): the window defaults to the whole sensor and must lie
+// inside it.
+void readCropWindow(const Element& e, FilmSettings& film) {
+  film.cropX = e.located([&] { return e.props.getInt("crop_offset_x", 0); });
+  film.cropY = e.located([&] { return e.props.getInt("crop_offset_y", 0); });
+  film.cropWidth = e.located([&] { return e.props.getInt("crop_width", film.width); });
+  film.cropHeight = e.located([&] { return e.props.getInt("crop_height", film.height); });
+  if (film.cropX < 0) e.failParam("crop_offset_x", "'crop_offset_x' must be non-negative");
+  if (film.cropY < 0) e.failParam("crop_offset_y", "'crop_offset_y' must be non-negative");
+  if (film.cropWidth <= 0) e.failParam("crop_width", "'crop_width' must be positive");
+  if (film.cropHeight <= 0) e.failParam("crop_height", "'crop_height' must be positive");
+  const std::string window = std::to_string(film.cropX) + "," + std::to_string(film.cropY) + " + " +
+                             std::to_string(film.cropWidth) + "x" + std::to_string(film.cropHeight);
+  if (static_cast<long long>(film.cropX) + film.cropWidth > film.width)
+    e.failParam("crop_width", "crop window " + window + " exceeds the film width " + std::to_string(film.width));
+  if (static_cast<long long>(film.cropY) + film.cropHeight > film.height)
+    e.failParam("crop_height", "crop window " + window + " exceeds the film height " + std::to_string(film.height));
+}
+
 void buildFilm(Loader& loader, const Element& e, FilmSettings& film) {
   if (e.type != "hdrfilm") {
     loader.unsupported(e.where() + ": unknown plugin '" + e.type + "'");
@@ -41,6 +60,7 @@ void buildFilm(Loader& loader, const Element& e, FilmSettings& film) {
   if (film.width <= 0 || film.width > 16384) e.failParam("width", "'width' must be in 1..16384, got " + std::to_string(film.width));
   if (film.height <= 0 || film.height > 16384) e.failParam("height", "'height' must be in 1..16384, got " + std::to_string(film.height));
   if (pixels > (1ll << 26)) e.fail("film of " + std::to_string(pixels) + " pixels exceeds the limit of 2^26");
+  readCropWindow(e, film);
   // Output format is decided by the -o file; Mitsuba's format strings are validated as Mitsuba does
   // and otherwise have no effect, so scenes stay portable.
   auto oneOf = [&](const char* name, const char* fallback, std::initializer_list<const char*> allowed) {
