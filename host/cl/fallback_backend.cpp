@@ -1,9 +1,9 @@
 #include "cl/fallback_backend.h"
 
-#include <chrono>
 #include <iostream>
 
 #include "core/error.h"
+#include "core/timing.h"
 
 namespace rc {
 
@@ -18,15 +18,14 @@ std::string FallbackBackend::deviceName() const {
 }
 
 template <class Call>
-void FallbackBackend::run(Call&& call, double& seconds, long long& items, long long count) {
-  const auto t0 = std::chrono::steady_clock::now();
+void FallbackBackend::run(Call&& call, double& seconds) {
+  const auto t0 = SteadyClock::now();
   if (!fellBack_) {
     try {
       call(*primary_);
       times_.programs = primary_->times().programs;
       times_.programsFromBinaryCache = primary_->times().programsFromBinaryCache;
-      seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      items += count;
+      seconds += secondsSince(t0);
       return;
     } catch (const Error& e) {
       fellBack_ = true;
@@ -39,23 +38,20 @@ void FallbackBackend::run(Call&& call, double& seconds, long long& items, long l
     }
   }
   call(*scalar_);
-  seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  items += count;
+  seconds += secondsSince(t0);
 }
 
 void FallbackBackend::project(const ProjectBatch& batch, ProjectResult& out) {
-  run([&](ShBackend& b) { b.project(batch, out); }, times_.project_s, times_.projectItems, batch.records);
+  run([&](ShBackend& b) { b.project(batch, out); }, times_.project_s);
 }
 void FallbackBackend::rotate(const RotateBatch& batch, std::vector<float>& out) {
-  run([&](ShBackend& b) { b.rotate(batch, out); }, times_.rotate_s, times_.rotateItems, batch.count);
+  run([&](ShBackend& b) { b.rotate(batch, out); }, times_.rotate_s);
 }
 void FallbackBackend::interpolate(const InterpolateBatch& batch, std::vector<float>& out) {
-  run([&](ShBackend& b) { b.interpolate(batch, out); }, times_.interpolate_s, times_.interpolateItems,
-      batch.points);
+  run([&](ShBackend& b) { b.interpolate(batch, out); }, times_.interpolate_s);
 }
 void FallbackBackend::brdfDot(const BrdfDotBatch& batch, std::vector<float>& out) {
-  run([&](ShBackend& b) { b.brdfDot(batch, out); }, times_.brdfDot_s, times_.brdfDotItems,
-      batch.points);
+  run([&](ShBackend& b) { b.brdfDot(batch, out); }, times_.brdfDot_s);
 }
 
 }  // namespace rc

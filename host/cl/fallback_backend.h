@@ -34,7 +34,7 @@ class FallbackBackend : public ShBackend {
   // Runs call(primary) unless fallen back; on rc::Error switches to the scalar backend (once) and
   // runs call(scalar). Adds the elapsed time to `seconds`.
   template <class Call>
-  void run(Call&& call, double& seconds, long long& items, long long count);
+  void run(Call&& call, double& seconds);
 };
 
 }  // namespace rc

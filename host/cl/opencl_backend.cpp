@@ -1,7 +1,6 @@
 #include "cl/opencl_backend.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 
@@ -9,13 +8,12 @@
 #include "cl/rotation_tables.h"
 #include "core/error.h"
 #include "core/math.h"
+#include "core/timing.h"
 
 namespace rc {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // All families share one program per order (few distinct build-option sets: PoCL compiles
 // ~1.5 s per program).
@@ -323,7 +321,7 @@ void OpenClBackend::projectChunk(Call& call, const ProjectBatch& b, long long b0
 }
 
 void OpenClBackend::project(const ProjectBatch& b, ProjectResult& out) {
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   validateProject(b);
   const long long S = static_cast<long long>(b.M) * b.N, B = b.records;
   const size_t outSize = 3ull * b.order * b.order * B;
@@ -342,11 +340,10 @@ void OpenClBackend::project(const ProjectBatch& b, ProjectResult& out) {
     for (long long b0 = 0; b0 < B; b0 += chunk) projectChunk(call, b, b0, std::min(chunk, B - b0), out);
   }
   times_.project_s += secondsSince(t0);
-  times_.projectItems += B;
 }
 
 void OpenClBackend::rotate(const RotateBatch& b, std::vector<float>& out) {
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   checkOrder("rotate", b.order);
   if (b.count < 0) throw Error("OpenCL rotate: negative count");
   const int n2 = b.order * b.order;
@@ -368,11 +365,10 @@ void OpenClBackend::rotate(const RotateBatch& b, std::vector<float>& out) {
     }
   }
   times_.rotate_s += secondsSince(t0);
-  times_.rotateItems += b.count;
 }
 
 void OpenClBackend::interpolate(const InterpolateBatch& b, std::vector<float>& out) {
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   validateInterpolate(b);
   const int n2 = b.order * b.order;
   const long long R = b.records, P = b.points;
@@ -409,11 +405,10 @@ void OpenClBackend::interpolate(const InterpolateBatch& b, std::vector<float>& o
     }
   }
   times_.interpolate_s += secondsSince(t0);
-  times_.interpolateItems += P;
 }
 
 void OpenClBackend::brdfDot(const BrdfDotBatch& b, std::vector<float>& out) {
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   validateBrdfDot(b);
   const int n2 = b.order * b.order;
   const long long P = b.points;
@@ -436,7 +431,6 @@ void OpenClBackend::brdfDot(const BrdfDotBatch& b, std::vector<float>& out) {
     }
   }
   times_.brdfDot_s += secondsSince(t0);
-  times_.brdfDotItems += P;
 }
 
 }  // namespace rc

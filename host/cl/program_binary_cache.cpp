@@ -8,6 +8,7 @@
 
 #include "cl/cl_runtime.h"
 #include "core/atomic_file.h"
+#include "core/binary_writer.h"
 #include "core/user_cache.h"
 
 namespace rc::cl {
@@ -20,11 +21,6 @@ constexpr char kMagic[8] = {'R', 'C', 'C', 'L', 'B', 'I', 'N', '2'};
 constexpr uint64_t kSecondBasis = 0x84222325cbf29ce4ULL;
 // A program binary of our kernels is ≈ 0.4 MB; anything claiming more than this is not one.
 constexpr uint64_t kMaxBinaryBytes = uint64_t(1) << 30;
-
-template <typename T>
-void put(std::string& s, const T& v) {
-  s.append(reinterpret_cast<const char*>(&v), sizeof(T));
-}
 
 template <typename T>
 bool get(const std::string& s, size_t& pos, T& v) {

@@ -1,17 +1,14 @@
 // The scalar path (no OpenCL): the references of host/sh run per item range under parallelFor.
 #include <algorithm>
-#include <chrono>
 
 #include "cl/sh_backend.h"
 #include "core/parallel.h"
+#include "core/timing.h"
 #include "sh/reference.h"
 
 namespace rc {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Chunks of ~8 per thread balance the load; the Range functions re-validate the batch per call,
 // so chunks must not be tiny.
@@ -28,7 +25,7 @@ class ScalarBackend final : public ShBackend {
   bool isOpenCl() const override { return false; }
 
   void project(const ProjectBatch& b, ProjectResult& out) override {
-    const auto t0 = Clock::now();
+    const auto t0 = SteadyClock::now();
     if (b.records <= 0 || b.order < 1) {
       ref::project(b, out);  // validates; empty result
     } else {
@@ -42,11 +39,10 @@ class ScalarBackend final : public ShBackend {
       });
     }
     times_.project_s += secondsSince(t0);
-    times_.projectItems += std::max(0, b.records);
   }
 
   void rotate(const RotateBatch& b, std::vector<float>& out) override {
-    const auto t0 = Clock::now();
+    const auto t0 = SteadyClock::now();
     if (b.count <= 0 || b.order < 1) {
       ref::rotate(b, out);
     } else {
@@ -56,11 +52,10 @@ class ScalarBackend final : public ShBackend {
       });
     }
     times_.rotate_s += secondsSince(t0);
-    times_.rotateItems += std::max(0, b.count);
   }
 
   void interpolate(const InterpolateBatch& b, std::vector<float>& out) override {
-    const auto t0 = Clock::now();
+    const auto t0 = SteadyClock::now();
     if (b.points <= 0 || b.order < 1) {
       ref::interpolate(b, out);
     } else {
@@ -70,11 +65,10 @@ class ScalarBackend final : public ShBackend {
       });
     }
     times_.interpolate_s += secondsSince(t0);
-    times_.interpolateItems += std::max(0, b.points);
   }
 
   void brdfDot(const BrdfDotBatch& b, std::vector<float>& out) override {
-    const auto t0 = Clock::now();
+    const auto t0 = SteadyClock::now();
     if (b.points <= 0 || b.order < 1) {
       ref::brdfDot(b, out);
     } else {
@@ -84,7 +78,6 @@ class ScalarBackend final : public ShBackend {
       });
     }
     times_.brdfDot_s += secondsSince(t0);
-    times_.brdfDotItems += std::max(0, b.points);
   }
 };
 

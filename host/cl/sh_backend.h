@@ -12,7 +12,6 @@ namespace rc {
 
 struct KernelTimes {  // accumulated wall time inside each family (host-observed, incl. transfers)
   double project_s = 0, rotate_s = 0, interpolate_s = 0, brdfDot_s = 0;
-  long long projectItems = 0, rotateItems = 0, interpolateItems = 0, brdfDotItems = 0;
   // OpenCL programs (one per SH order) this backend built, and how many of them came from the
   // disk cache of program binaries instead of the compiler.
   int programs = 0, programsFromBinaryCache = 0;

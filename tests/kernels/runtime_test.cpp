@@ -151,7 +151,6 @@ TEST(Factory, ScalarBackendRunsTheReferencesAndCountsTime) {
   ref::rotate(b, ref);
   cpu->rotate(b, got);
   EXPECT_EQ(got, ref);  // same code, split over threads: bit-identical
-  EXPECT_EQ(cpu->times().rotateItems, 300);
   EXPECT_GT(cpu->times().rotate_s, 0.0);
   ProjectBatch p = cases::makeProjectBatch(3, 4, 16, 5, 2u, true, true);
   ProjectResult pr, pg;
@@ -164,12 +163,11 @@ TEST(Factory, ScalarBackendRunsTheReferencesAndCountsTime) {
 
 TEST(Backend, KernelTimesAccumulate) {
   RC_KERNEL_BACKEND(backend);
-  const long long before = backend->times().brdfDotItems;
+  const double before = backend->times().brdfDot_s;
   BrdfDotBatch b = cases::makeBrdfDotBatch(4, 50, 1u);
   std::vector<float> out;
   backend->brdfDot(b, out);
-  EXPECT_EQ(backend->times().brdfDotItems, before + 50);
-  EXPECT_GT(backend->times().brdfDot_s, 0.0);
+  EXPECT_GT(backend->times().brdfDot_s, before);
   EXPECT_TRUE(backend->isOpenCl());
 }
 
