@@ -91,19 +91,26 @@ RenderLoopResult sampleLoop(const RenderContext& ctx, Film& film, const RenderLo
     std::vector<Color> radiance;
     for (int py = tile.y0(); py < tile.y1(); ++py) {
       const size_t row = static_cast<size_t>(py) * width;
-      rngs.clear();
-      inputs.clear();
+      // Sized first and filled in place: a sample's Rng and input are written once, where they stay.
+      size_t n = 0;
       for (int px = tile.x0(); px < tile.x1(); ++px)
-        for (int s = ranges[row + px].first; s < ranges[row + px].end; ++s) {
-          rngs.push_back(pixelRng(settings.seed, width, px, py, s, settings.lowDiscrepancy));
-          SampleInput in;
+        n += static_cast<size_t>(std::max(0, ranges[row + px].end - ranges[row + px].first));
+      if (rngs.size() < n) rngs.resize(n), inputs.resize(n);
+      size_t k = 0;
+      for (int px = tile.x0(); px < tile.x1(); ++px) {
+        const PixelRngSeed pixelSeed = pixelRngSeed(settings.seed, width, px, py, settings.lowDiscrepancy);
+        const Vec2 pixel(static_cast<float>(px), static_cast<float>(py));
+        for (int s = ranges[row + px].first; s < ranges[row + px].end; ++s, ++k) {
+          seedPixelRng(rngs[k], pixelSeed, s);
+          SampleInput& in = inputs[k];
           in.px = px;
           in.py = py;
           in.sampleIndex = s;
-          in.filmPos = Vec2(static_cast<float>(px), static_cast<float>(py)) + rngs.back().next2D();
-          inputs.push_back(in);
+          in.filmPos = pixel + rngs[k].next2D();
+          in.cameraRay = nullptr;
+          in.cameraHit = nullptr;
         }
-      const size_t n = inputs.size();
+      }
       if (n == 0) continue;
       if (batch) {
         rays.resize(n);
