@@ -18,13 +18,13 @@ inline Vec2 squareToUniformDiskConcentric(const Vec2& s) {
 
 inline Vec3 squareToCosineHemisphere(const Vec2& s) {
   const Vec2 p = squareToUniformDiskConcentric(s);
-  const float z = std::sqrt(std::fmax(0.0f, 1.0f - p.x * p.x - p.y * p.y));
+  const float z = std::sqrt(fmaxInline(0.0f, 1.0f - p.x * p.x - p.y * p.y));
   return Vec3(p.x, p.y, z);
 }
 
 inline float squareToCosineHemispherePdf(const Vec3& v) { return kInvPi * v.z; }
 
-inline float safeSqrt(float x) { return std::sqrt(std::fmax(0.0f, x)); }
+inline float safeSqrt(float x) { return std::sqrt(fmaxInline(0.0f, x)); }
 
 // Mirror about the local normal (Mitsuba's reflect(wi)).
 inline Vec3 reflectZ(const Vec3& w) { return Vec3(-w.x, -w.y, w.z); }

@@ -18,6 +18,10 @@ constexpr double kPiD = 3.14159265358979323846;
 
 inline float luminance(const Color& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 inline bool isFinite(const Color& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
-inline float maxComponent(const Color& c) { return std::fmax(c.r, std::fmax(c.g, c.b)); }
+// std::fmax's result, bit for bit as glibc's fmaxf gives it (the other operand when one is NaN, the
+// second when they compare equal, so fmaxf(0,-0) = -0), without its call: on the baseline x86-64
+// target GCC does not inline fmax, and the per-sample code calls it several times a vertex.
+inline float fmaxInline(float a, float b) { return (a > b || b != b) ? a : b; }
+inline float maxComponent(const Color& c) { return fmaxInline(c.r, fmaxInline(c.g, c.b)); }
 
 }  // namespace rc

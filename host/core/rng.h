@@ -17,7 +17,11 @@ class Rng {
  public:
   explicit Rng(uint64_t seed = 0, uint64_t stream = 0) { seedWith(seed, stream); }
 
+  // Restarts this Rng as a plain PCG stream (any low-discrepancy prefix dropped first, so that the
+  // seeding draws below are PCG's whatever the Rng was used for before).
   void seedWith(uint64_t seed, uint64_t stream) {
+    ldSeed_ = ldIndex_ = ldReversedIndex_ = ldDim_ = ldDims_ = 0;
+    ldShuffledValid_ = false;
     state_ = 0u;
     inc_ = (stream << 1u) | 1u;
     nextUint();

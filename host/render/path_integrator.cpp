@@ -126,10 +126,8 @@ class PathIntegrator final : public Integrator {
       thread_local PathWave wave;
       for (size_t b = 0; b < n; b += kWaveSize) {
         const size_t m = std::min(kWaveSize, n - b);
-        wave.cameraRays.resize(m);
-        wave.cameraHits.resize(m);
-        for (size_t k = 0; k < m; ++k) wave.cameraRays[k] = *in[b + k].cameraRay, wave.cameraHits[k] = *in[b + k].cameraHit;
-        pathRadianceBatch(ctx, settings_, rngs + b, m, out + b, wave, query_);
+        // A batch's camera rays and hits are consecutive elements of one array (render_loop.h).
+        pathRadianceBatch(ctx, settings_, in[b].cameraRay, in[b].cameraHit, rngs + b, m, out + b, wave, query_);
       }
     });
   }

@@ -48,8 +48,8 @@ void sortByOctant(PathWave& w, size_t live) {
 
 }  // namespace
 
-void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& settings, Rng* rngs, size_t count,
-                       Color* out, PathWave& w, BatchQuery query) {
+void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& settings, const Ray* cameraRays,
+                       const Hit* cameraHits, Rng* rngs, size_t count, Color* out, PathWave& w, BatchQuery query) {
   const Scene& scene = ctx.scene;
   const int maxDepth = settings.maxDepth;
   if (maxDepth == 0) {
@@ -65,13 +65,13 @@ void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& setti
     w.prevP[i] = Vec3(0.0f);
     w.prevPdf[i] = 0.0f;
     w.prevDelta[i] = 1;
-    w.rays[i] = w.cameraRays[i];
+    w.rays[i] = cameraRays[i];
     w.active[i] = static_cast<uint32_t>(i);
   }
 
   for (int depth = 0; live > 0; ++depth) {
     // This bounce's segments: the camera rays' hits are given; later ones go to the BVH together.
-    const Hit* hits = w.cameraHits.data();
+    const Hit* hits = cameraHits;
     if (depth > 0) {
       sortByOctant(w, live);
       for (size_t k = 0; k < live; ++k) w.waveRays[k] = w.rays[w.active[k]];

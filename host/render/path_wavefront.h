@@ -19,8 +19,6 @@ namespace rc {
 // Reusable per-thread buffers of one wave (structure of arrays over the wave's lanes); sized on
 // first use and kept, so rendering allocates nothing per sample.
 struct PathWave {
-  std::vector<Ray> cameraRays;  // input: the wave's camera rays and their hits
-  std::vector<Hit> cameraHits;
   std::vector<Ray> rays;  // per lane: the segment it traces next
   std::vector<Color> radiance, throughput;
   std::vector<Vec3> prevP;
@@ -36,10 +34,11 @@ struct PathWave {
   std::vector<Hit> waveHits;
 };
 
-// Radiance of `count` camera samples: wave.cameraRays[i] with its first hit wave.cameraHits[i]
-// (filled by the caller, already traced), drawing from rngs[i]; out[i] receives the sample's
-// radiance. `query` picks how the batches go to Embree.
-void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& settings, Rng* rngs, size_t count,
-                       Color* out, PathWave& wave, BatchQuery query = BatchQuery::Packet16);
+// Radiance of `count` camera samples: cameraRays[i] with its first hit cameraHits[i] (already
+// traced; read in place, not copied), drawing from rngs[i]; out[i] receives the sample's radiance.
+// `query` picks how the batches go to Embree.
+void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& settings, const Ray* cameraRays,
+                       const Hit* cameraHits, Rng* rngs, size_t count, Color* out, PathWave& wave,
+                       BatchQuery query = BatchQuery::Packet16);
 
 }  // namespace rc

@@ -101,33 +101,41 @@ RenderLoopResult sampleLoop(const RenderContext& ctx, Film& film, const RenderLo
     for (int py = tile.y0(); py < tile.y1() && !cancelled(); ++py) {
       const size_t row = static_cast<size_t>(py) * width;
       for (int px = tile.x0(); px < tile.x1() && !cancelled();) {
-        rngs.clear();
-        inputs.clear();
-        for (; px < tile.x1() && inputs.size() < kChunkSamples; ++px)
-          for (int s = ranges[row + px].first; s < ranges[row + px].end; ++s) {
-            rngs.push_back(pixelRng(settings.seed, film.sensorWidth(), film.cropX() + px, film.cropY() + py, s,
-                                    settings.lowDiscrepancy));
-            SampleInput in;
-            in.px = px;
+        // The chunk's pixels (whole pixels, at least kChunkSamples samples or the rest of the row),
+        // sized first and filled in place: a sample's Rng and input are written once, where they stay.
+        const int chunkBegin = px;
+        size_t n = 0;
+        for (; px < tile.x1() && n < kChunkSamples; ++px)
+          n += static_cast<size_t>(std::max(0, ranges[row + px].end - ranges[row + px].first));
+        if (n == 0) continue;
+        if (rngs.size() < n) rngs.resize(n), inputs.resize(n);
+        size_t k = 0;
+        for (int x = chunkBegin; x < px; ++x) {
+          // Streams keyed by the sensor pixel and jittered on the sensor, then moved into the crop
+          // window: exact, so the camera, which moves it back, sees the bits a full render sees.
+          const int sx = film.cropX() + x, sy = film.cropY() + py;
+          const PixelRngSeed pixelSeed = pixelRngSeed(settings.seed, film.sensorWidth(), sx, sy, settings.lowDiscrepancy);
+          const Vec2 onSensorPixel(static_cast<float>(sx), static_cast<float>(sy));
+          const Vec2 cropOrigin(static_cast<float>(film.cropX()), static_cast<float>(film.cropY()));
+          for (int s = ranges[row + x].first; s < ranges[row + x].end; ++s, ++k) {
+            seedPixelRng(rngs[k], pixelSeed, s);
+            SampleInput& in = inputs[k];
+            in.px = x;
             in.py = py;
             in.sampleIndex = s;
-            // Jittered on the sensor, then moved into the crop window: exact, so the camera, which
-            // moves it back, sees the bits a full render sees.
-            const Vec2 onSensor = Vec2(static_cast<float>(film.cropX() + px), static_cast<float>(film.cropY() + py)) +
-                                  rngs.back().next2D();
-            in.filmPos = onSensor - Vec2(static_cast<float>(film.cropX()), static_cast<float>(film.cropY()));
-            inputs.push_back(in);
+            in.filmPos = (onSensorPixel + rngs[k].next2D()) - cropOrigin;
+            in.cameraRay = nullptr;
+            in.cameraHit = nullptr;
           }
-        const size_t n = inputs.size();
-        if (n == 0) continue;
+        }
         if (batch) {
           rays.resize(n);
           hits.resize(n);
-          for (size_t k = 0; k < n; ++k) rays[k] = settings.cameraRay(inputs[k].filmPos);
+          for (size_t i = 0; i < n; ++i) rays[i] = settings.cameraRay(inputs[i].filmPos);
           ctx.accel.intersect(rays.data(), hits.data(), n, true);
-          for (size_t k = 0; k < n; ++k) {
-            inputs[k].cameraRay = &rays[k];
-            inputs[k].cameraHit = &hits[k];
+          for (size_t i = 0; i < n; ++i) {
+            inputs[i].cameraRay = &rays[i];
+            inputs[i].cameraHit = &hits[i];
           }
         }
         radiance.resize(n);

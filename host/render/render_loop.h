@@ -39,7 +39,8 @@ struct SampleInput {
   Vec2 filmPos;
   int px, py, sampleIndex;
   // With RenderLoopSettings::cameraRay: the sample's camera ray and its first hit, already traced
-  // (a tile row's camera rays go to the BVH as one coherent stream). Null otherwise.
+  // (a tile row's camera rays go to the BVH as one coherent stream). Null otherwise. The n inputs
+  // one BatchFn call gets have theirs in consecutive elements: in[k].cameraRay == in[0].cameraRay + k.
   const Ray* cameraRay = nullptr;
   const Hit* cameraHit = nullptr;
 };
@@ -54,15 +55,33 @@ using BatchFn = std::function<void(const SampleInput* in, Rng* rngs, size_t n, C
 RenderLoopResult renderSampleBatches(const RenderContext& ctx, Film& film, const RenderLoopSettings& settings,
                                      const BatchFn& fn);
 
+// What the RNGs of one pixel's samples share: the pixel's index and low-discrepancy seed, hashed
+// once per pixel rather than once per sample.
+struct PixelRngSeed {
+  uint64_t seed = 0, pixel = 0;
+  uint32_t lowDiscrepancySeed = 0;
+  bool lowDiscrepancy = false;
+};
+inline PixelRngSeed pixelRngSeed(uint64_t seed, int width, int px, int py, bool lowDiscrepancy = false) {
+  PixelRngSeed p;
+  p.seed = seed;
+  p.pixel = static_cast<uint64_t>(py) * static_cast<uint64_t>(width) + static_cast<uint64_t>(px);
+  p.lowDiscrepancy = lowDiscrepancy;
+  if (lowDiscrepancy) p.lowDiscrepancySeed = static_cast<uint32_t>(hashMix(seed, p.pixel, 0x1D5A3B1E5ULL));
+  return p;
+}
+// Sets `rng` (in place: no temporary to copy) to the stream of sample `sampleIndex` of the pixel.
+inline void seedPixelRng(Rng& rng, const PixelRngSeed& p, int sampleIndex) {
+  // Everything hashed into the state: PCG streams that differ only in the increment are correlated.
+  rng.seedWith(hashMix(p.seed, p.pixel, static_cast<uint64_t>(sampleIndex)), p.pixel);
+  if (p.lowDiscrepancy) rng.useLowDiscrepancy(p.lowDiscrepancySeed, static_cast<uint32_t>(sampleIndex), Rng::kPixelLowDiscrepancyDims);
+}
+
 // The RNG of sample `sampleIndex` of pixel (px, py) of an image `width` wide; with lowDiscrepancy
 // its first Rng::kPixelLowDiscrepancyDims draws are the pixel's padded Sobol points.
 inline Rng pixelRng(uint64_t seed, int width, int px, int py, int sampleIndex, bool lowDiscrepancy = false) {
-  const uint64_t pixel = static_cast<uint64_t>(py) * static_cast<uint64_t>(width) + static_cast<uint64_t>(px);
-  // Everything hashed into the state: PCG streams that differ only in the increment are correlated.
-  Rng rng(hashMix(seed, pixel, static_cast<uint64_t>(sampleIndex)), pixel);
-  if (lowDiscrepancy)
-    rng.useLowDiscrepancy(static_cast<uint32_t>(hashMix(seed, pixel, 0x1D5A3B1E5ULL)), static_cast<uint32_t>(sampleIndex),
-                          Rng::kPixelLowDiscrepancyDims);
+  Rng rng;
+  seedPixelRng(rng, pixelRngSeed(seed, width, px, py, lowDiscrepancy), sampleIndex);
   return rng;
 }
 

@@ -3,6 +3,7 @@
 
 #include <atomic>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sys/stat.h>
 
@@ -10,6 +11,7 @@
 #include "core/error.h"
 #include "core/frame.h"
 #include "core/image_metrics.h"
+#include "core/math.h"
 #include "core/parallel.h"
 #include "core/properties.h"
 #include "core/rng.h"
@@ -55,6 +57,25 @@ TEST(Properties, TracksUseAndChecksTypes) {
   EXPECT_EQ(p.getInt("missing", 3), 3);
 }
 
+// maxComponent and the warps use fmaxInline in place of std::fmax: the images stay bit-identical
+// only if it returns the very bits glibc's fmaxf does, signed zeros and NaNs included.
+TEST(Math, FmaxInlineMatchesStdFmaxBitForBit) {
+  const volatile float nan = std::nanf("");
+  const float values[] = {0.0f, -0.0f, 1.0f, -1.0f, 0.5f, 1e-38f, -1e-45f, INFINITY, -INFINITY, nan, 3.0e38f};
+  for (float a : values)
+    for (float b : values) {
+      // Through a volatile pointer: glibc's fmaxf at run time, as the renderer called it (never a
+      // compile-time folding, which need not order equal signed zeros the same way).
+      float (*volatile libmFmax)(float, float) = ::fmaxf;
+      const float expected = libmFmax(a, b), got = rc::fmaxInline(a, b);
+      uint32_t e, g;
+      std::memcpy(&e, &expected, 4);
+      std::memcpy(&g, &got, 4);
+      if (std::isnan(expected)) EXPECT_TRUE(std::isnan(got)) << a << " " << b;
+      else EXPECT_EQ(e, g) << a << " " << b;
+    }
+}
+
 TEST(Rng, DeterministicPerStreamAndInRange) {
   Rng a(42, 7), b(42, 7), c(42, 8);
   bool differs = false;
@@ -66,6 +87,30 @@ TEST(Rng, DeterministicPerStreamAndInRange) {
     EXPECT_LT(x, 1.0f);
   }
   EXPECT_TRUE(differs);
+}
+
+// Reseeding a used Rng (the sample loop reuses its per-row Rngs in place) gives exactly the stream
+// of a fresh one, also after a low-discrepancy prefix was in use.
+TEST(Rng, ReseedingAUsedRngEqualsAFreshOne) {
+  Rng used(1, 2);
+  used.useLowDiscrepancy(99, 5, 24);
+  for (int i = 0; i < 3; ++i) used.nextFloat();
+  used.seedWith(42, 7);
+  Rng fresh(42, 7);
+  for (int i = 0; i < 100; ++i) EXPECT_EQ(used.nextUint(), fresh.nextUint());
+  used.useLowDiscrepancy(3, 4, 24);
+  for (int i = 0; i < 5; ++i) used.nextFloat();
+  used.seedWith(8, 9);
+  used.useLowDiscrepancy(11, 12, 24);
+  fresh.seedWith(8, 9);
+  fresh.useLowDiscrepancy(11, 12, 24);
+  Rng brandNew(8, 9);
+  brandNew.useLowDiscrepancy(11, 12, 24);
+  for (int i = 0; i < 40; ++i) {
+    const uint32_t x = brandNew.nextUint();
+    EXPECT_EQ(used.nextUint(), x);
+    EXPECT_EQ(fresh.nextUint(), x);
+  }
 }
 
 TEST(Frame, DuffBasisIsOrthonormalAndRightHanded) {

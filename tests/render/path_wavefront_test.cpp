@@ -2,10 +2,12 @@
 // numbers per sample, the same image within noise, and Embree's three batched query forms agreeing.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 
 #include "core/image_metrics.h"
 #include "core/parallel.h"
+#include "render/film.h"
 #include "render/camera.h"
 #include "render/direct_light.h"
 #include "render/path_integrator.h"
@@ -45,15 +47,15 @@ TEST(PathWavefront, SameRadiancePerSampleAsTheScalarPath) {
   PathWave wave;
   std::vector<Rng> rngs0(n);
   std::vector<Color> scalar(n);
-  wave.cameraRays.resize(n);
-  wave.cameraHits.resize(n);
+  std::vector<Ray> cameraRays(n);
+  std::vector<Hit> cameraHits(n);
   for (size_t k = 0; k < n; ++k) {
     const int px = static_cast<int>(k / 4) % 16, py = static_cast<int>(k / 64);
     rngs0[k] = pixelRng(7, 16, px, py, static_cast<int>(k % 4));
-    wave.cameraRays[k] = camera.generate(Vec2(static_cast<float>(px), static_cast<float>(py)) + rngs0[k].next2D());
-    wave.cameraHits[k] = w.accel->intersect(wave.cameraRays[k]);
+    cameraRays[k] = camera.generate(Vec2(static_cast<float>(px), static_cast<float>(py)) + rngs0[k].next2D());
+    cameraHits[k] = w.accel->intersect(cameraRays[k]);
     Rng rng = rngs0[k];
-    scalar[k] = pathRadiance(ctx, w.scene.integrator, wave.cameraRays[k], rng, &wave.cameraHits[k]);
+    scalar[k] = pathRadiance(ctx, w.scene.integrator, cameraRays[k], rng, &cameraHits[k]);
   }
   size_t lit = 0;
   for (const Color& c : scalar) lit += maxComponent(c) > 0.0f;
@@ -61,7 +63,7 @@ TEST(PathWavefront, SameRadiancePerSampleAsTheScalarPath) {
   for (BatchQuery query : {BatchQuery::Single, BatchQuery::Stream, BatchQuery::Packet16}) {
     std::vector<Rng> rngs = rngs0;
     std::vector<Color> batch(n);
-    pathRadianceBatch(ctx, w.scene.integrator, rngs.data(), n, batch.data(), wave, query);
+    pathRadianceBatch(ctx, w.scene.integrator, cameraRays.data(), cameraHits.data(), rngs.data(), n, batch.data(), wave, query);
     size_t same = 0;
     for (size_t k = 0; k < n; ++k) same += batch[k] == scalar[k];
     if (query == BatchQuery::Single) EXPECT_EQ(same, n);
@@ -193,6 +195,38 @@ TEST(PathWavefront, ImageAgreesWithTheScalarPathWithinNoise) {
         ++checked;
       }
   EXPECT_GE(checked, blocks * blocks * 3 / 2);
+}
+
+// The sample loop fills its per-row Rngs in place (reused from row to row): every sample must still
+// get exactly pixelRng's stream, with its film position drawn first, for both samplers.
+TEST(PathWavefront, SampleLoopGivesEverySampleItsPixelRng) {
+  for (bool lowDiscrepancy : {false, true}) {
+    FilmSettings fs;
+    fs.width = 40;
+    fs.height = 36;
+    Film film(fs);
+    RenderLoopSettings loop;
+    loop.spp = 3;
+    loop.seed = 17;
+    loop.lowDiscrepancy = lowDiscrepancy;
+    loop.tileSize = 16;
+    std::atomic<int> mismatches{0}, samples{0};
+    setThreadCount(2);
+    const test::World w = world(8);
+    const RenderContext ctx = w.context();
+    renderSamples(ctx, film, loop, [&](const SampleInput& in, Rng& rng, TileFilm&) {
+      Rng expected = pixelRng(loop.seed, fs.width, in.px, in.py, in.sampleIndex, lowDiscrepancy);
+      const Vec2 filmPos = Vec2(static_cast<float>(in.px), static_cast<float>(in.py)) + expected.next2D();
+      bool same = filmPos == in.filmPos;
+      for (int i = 0; i < 30; ++i) same &= rng.nextUint() == expected.nextUint();
+      mismatches += !same;
+      ++samples;
+      return Color(0.0f);
+    });
+    setThreadCount(0);
+    EXPECT_EQ(samples.load(), 40 * 36 * 3);
+    EXPECT_EQ(mismatches.load(), 0) << "lowDiscrepancy " << lowDiscrepancy;
+  }
 }
 
 }  // namespace
