@@ -71,6 +71,46 @@ bool usesLowDiscrepancy(const RenderContext& ctx) {
 
 namespace {
 
+// Samples per shading chunk of a tile row: large enough for a coherent ray stream, small enough
+// that cancellation, checked between chunks, stops the render promptly.
+constexpr size_t kChunkSamples = 4096;
+
+// Appends the RNG streams and film positions of whole pixels from `px` on in row `py` until the
+// chunk holds kChunkSamples samples or the tile row ends; returns the first pixel not taken.
+int gatherChunk(const Film& film, const RenderLoopSettings& settings, const std::vector<SampleRange>& ranges,
+                size_t row, int py, int px, int x1, std::vector<Rng>& rngs, std::vector<SampleInput>& inputs) {
+  for (; px < x1 && inputs.size() < kChunkSamples; ++px)
+    for (int s = ranges[row + px].first; s < ranges[row + px].end; ++s) {
+      rngs.push_back(pixelRng(settings.seed, film.sensorWidth(), film.cropX() + px, film.cropY() + py, s,
+                              settings.lowDiscrepancy));
+      SampleInput in;
+      in.px = px;
+      in.py = py;
+      in.sampleIndex = s;
+      // Jittered on the sensor, then moved into the crop window: exact, so the camera, which
+      // moves it back, sees the bits a full render sees.
+      const Vec2 onSensor = Vec2(static_cast<float>(film.cropX() + px), static_cast<float>(film.cropY() + py)) +
+                            rngs.back().next2D();
+      in.filmPos = onSensor - Vec2(static_cast<float>(film.cropX()), static_cast<float>(film.cropY()));
+      inputs.push_back(in);
+    }
+  return px;
+}
+
+// Traces the chunk's camera rays as one stream and points each input at its ray and hit.
+void traceCameraRays(const RenderContext& ctx, const RenderLoopSettings& settings, std::vector<SampleInput>& inputs,
+                     std::vector<Ray>& rays, std::vector<Hit>& hits) {
+  const size_t n = inputs.size();
+  rays.resize(n);
+  hits.resize(n);
+  for (size_t k = 0; k < n; ++k) rays[k] = settings.cameraRay(inputs[k].filmPos);
+  ctx.accel.intersect(rays.data(), hits.data(), n, true);
+  for (size_t k = 0; k < n; ++k) {
+    inputs[k].cameraRay = &rays[k];
+    inputs[k].cameraHit = &hits[k];
+  }
+}
+
 // The sample loop shared by renderSamples and renderSampleBatches: per tile row (in chunks of whole
 // pixels when the row holds many samples), the samples' RNG streams, film positions, camera rays
 // and their hits traced as one coherent stream, then `shadeRow(inputs, rngs, n, radiance)`, then
@@ -95,41 +135,17 @@ RenderLoopResult sampleLoop(const RenderContext& ctx, Film& film, const RenderLo
     std::vector<Color> radiance;
     // Cancellation is checked per pixel, not only per tile: at high spp one tile is minutes of
     // work, and SIGINT/SIGTERM must stop the render promptly (the partial tile is kept). A row is
-    // therefore shaded in chunks of whole pixels, each large enough for a coherent ray stream.
-    constexpr size_t kChunkSamples = 4096;
+    // therefore shaded in chunks of whole pixels (kChunkSamples).
     auto cancelled = [&] { return ctx.cancel && ctx.cancel->load(std::memory_order_relaxed); };
     for (int py = tile.y0(); py < tile.y1() && !cancelled(); ++py) {
       const size_t row = static_cast<size_t>(py) * width;
       for (int px = tile.x0(); px < tile.x1() && !cancelled();) {
         rngs.clear();
         inputs.clear();
-        for (; px < tile.x1() && inputs.size() < kChunkSamples; ++px)
-          for (int s = ranges[row + px].first; s < ranges[row + px].end; ++s) {
-            rngs.push_back(pixelRng(settings.seed, film.sensorWidth(), film.cropX() + px, film.cropY() + py, s,
-                                    settings.lowDiscrepancy));
-            SampleInput in;
-            in.px = px;
-            in.py = py;
-            in.sampleIndex = s;
-            // Jittered on the sensor, then moved into the crop window: exact, so the camera, which
-            // moves it back, sees the bits a full render sees.
-            const Vec2 onSensor = Vec2(static_cast<float>(film.cropX() + px), static_cast<float>(film.cropY() + py)) +
-                                  rngs.back().next2D();
-            in.filmPos = onSensor - Vec2(static_cast<float>(film.cropX()), static_cast<float>(film.cropY()));
-            inputs.push_back(in);
-          }
+        px = gatherChunk(film, settings, ranges, row, py, px, tile.x1(), rngs, inputs);
         const size_t n = inputs.size();
         if (n == 0) continue;
-        if (batch) {
-          rays.resize(n);
-          hits.resize(n);
-          for (size_t k = 0; k < n; ++k) rays[k] = settings.cameraRay(inputs[k].filmPos);
-          ctx.accel.intersect(rays.data(), hits.data(), n, true);
-          for (size_t k = 0; k < n; ++k) {
-            inputs[k].cameraRay = &rays[k];
-            inputs[k].cameraHit = &hits[k];
-          }
-        }
+        if (batch) traceCameraRays(ctx, settings, inputs, rays, hits);
         radiance.resize(n);
         shadeRow(inputs.data(), rngs.data(), n, radiance.data(), tile);
         for (size_t k = 0; k < n; ++k) {
