@@ -116,40 +116,27 @@ std::unique_ptr<Integrator> integratorFor(const RenderArgs& ra, const Scene& sce
   return integrator;
 }
 
-int runRender(const std::vector<std::string>& args) {
-  RenderArgs ra = parseRenderArgs(args);
-  if (ra.threads > 0) setThreadCount(ra.threads);
-  const std::string output = ra.outputPath.empty() ? defaultOutputPath(ra.scenePath) : ra.outputPath;
-  checkOutputs(ra, output);
-  installSignalHandlers();
-
-  RenderStats stats;
-  const auto tStart = SteadyClock::now();
+Scene loadSceneReportingWarnings(const RenderArgs& ra) {
   LoadOptions lo;
   lo.defines = ra.defines;
   lo.lenient = ra.lenient;
   std::vector<std::string> warnings;
   Scene scene = loadScene(ra.scenePath, lo, &warnings);
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
-  const double loadS = secondsSince(tStart);
-  if (gCancel) return 128 + gSignal.load();  // stopped while loading: nothing rendered to keep
-  applyCropFlag(ra.crop, scene.film);
-  const IntegratorEntry* entry = nullptr;
-  std::unique_ptr<Integrator> integrator = integratorFor(ra, scene, entry);
+  return scene;
+}
 
-  const auto tBvh = SteadyClock::now();
-  Accel accel(scene);
-  LightSampler lights(scene);
-  const double bvhS = secondsSince(tBvh);
-
+std::unique_ptr<ShBackend> backendFor(const RenderArgs& ra, const IntegratorEntry& entry) {
   std::unique_ptr<ShBackend> backend;
-  if (entry->usesKernels) {
+  if (entry.usesKernels) {
     std::string notice;
     backend = makeShBackend(ra.device, &notice);
     if (!notice.empty() && !ra.quiet) std::cerr << "notice: " << notice << "\n";
   }
+  return backend;
+}
 
-  ProgressBar bar(ra.quiet);
+RenderOptions renderOptionsFrom(const RenderArgs& ra) {
   RenderOptions opts;
   opts.spp = ra.spp;
   opts.sampler = ra.sampler;
@@ -160,6 +147,60 @@ int runRender(const std::vector<std::string>& args) {
   opts.cacheSave = ra.cacheSave;
   opts.cacheLoad = ra.cacheLoad;
   opts.cacheReuse = ra.cacheReuse;
+  return opts;
+}
+
+void reportStats(const RenderStats& stats, const RenderArgs& ra) {
+  if (!ra.quiet) printStats(stats, std::cout);
+  if (!ra.statsPath.empty()) writeFileAtomically(ra.statsPath, statsToJson(stats));
+}
+
+// Seconds spent in each phase of one image render.
+struct PhaseSeconds {
+  double load = 0.0, bvh = 0.0, render = 0.0, write = 0.0;
+};
+
+void recordImageStats(RenderStats& stats, const RenderArgs& ra, const std::string& output, const Integrator& integrator,
+                      const ShBackend* backend, const Image& image, const PhaseSeconds& t) {
+  stats.setText("scene", ra.scenePath);
+  stats.setText("output", output);
+  stats.setText("integrator", integrator.name());
+  stats.setText("device", backend ? backend->deviceName() : std::string("cpu (path tracer needs no kernels)"));
+  stats.set("threads", threadCount());
+  stats.set("width", image.width);
+  stats.set("height", image.height);
+  stats.set("time_load_s", t.load);
+  stats.set("time_bvh_s", t.bvh);
+  stats.set("time_render_s", t.render);
+  stats.set("time_write_s", t.write);
+}
+
+int runRender(const std::vector<std::string>& args) {
+  RenderArgs ra = parseRenderArgs(args);
+  if (ra.threads > 0) setThreadCount(ra.threads);
+  const std::string output = ra.outputPath.empty() ? defaultOutputPath(ra.scenePath) : ra.outputPath;
+  checkOutputs(ra, output);
+  installSignalHandlers();
+
+  RenderStats stats;
+  PhaseSeconds t;
+  const auto tStart = SteadyClock::now();
+  Scene scene = loadSceneReportingWarnings(ra);
+  t.load = secondsSince(tStart);
+  if (gCancel) return 128 + gSignal.load();  // stopped while loading: nothing rendered to keep
+  applyCropFlag(ra.crop, scene.film);
+  const IntegratorEntry* entry = nullptr;
+  std::unique_ptr<Integrator> integrator = integratorFor(ra, scene, entry);
+
+  const auto tBvh = SteadyClock::now();
+  Accel accel(scene);
+  LightSampler lights(scene);
+  t.bvh = secondsSince(tBvh);
+
+  std::unique_ptr<ShBackend> backend = backendFor(ra, *entry);
+
+  ProgressBar bar(ra.quiet);
+  RenderOptions opts = renderOptionsFrom(ra);
   RenderContext ctx{scene, accel, lights, opts, backend.get(), &gCancel,
                     [&bar](const std::string& phase, double done, double total) { bar.update(phase, done, total); }};
 
@@ -167,34 +208,22 @@ int runRender(const std::vector<std::string>& args) {
     stats = renderWalk({ra, output, scene, ctx, *integrator, bar});
     stats.setText("scene", ra.scenePath);
     stats.set("time_s", secondsSince(tStart));
-    if (!ra.quiet) printStats(stats, std::cout);
-    if (!ra.statsPath.empty()) writeFileAtomically(ra.statsPath, statsToJson(stats));
+    reportStats(stats, ra);
     return gCancel ? 128 + gSignal.load() : 0;
   }
   const auto tRender = SteadyClock::now();
   Image image = integrator->render(ctx, stats);
-  const double renderS = secondsSince(tRender);
+  t.render = secondsSince(tRender);
   bar.finish();
 
   const auto tWrite = SteadyClock::now();
   writeImage(image, output);
-  const double writeS = secondsSince(tWrite);
+  t.write = secondsSince(tWrite);
 
-  stats.setText("scene", ra.scenePath);
-  stats.setText("output", output);
-  stats.setText("integrator", integrator->name());
-  stats.setText("device", backend ? backend->deviceName() : std::string("cpu (path tracer needs no kernels)"));
-  stats.set("threads", threadCount());
-  stats.set("width", image.width);
-  stats.set("height", image.height);
-  stats.set("time_load_s", loadS);
-  stats.set("time_bvh_s", bvhS);
-  stats.set("time_render_s", renderS);
-  stats.set("time_write_s", writeS);
+  recordImageStats(stats, ra, output, *integrator, backend.get(), image, t);
   stats.set("time_s", secondsSince(tStart));
   if (gCancel) stats.set("interrupted", 1);
-  if (!ra.quiet) printStats(stats, std::cout);
-  if (!ra.statsPath.empty()) writeFileAtomically(ra.statsPath, statsToJson(stats));
+  reportStats(stats, ra);
   // A failed cache save does not cost the image: it was written above, the failure is reported now.
   const std::string cacheError = stats.text("cache_save_error");
   if (!cacheError.empty()) throw Error(cacheError);

@@ -78,6 +78,42 @@ std::vector<std::string> splitCommas(const std::string& text) {
   return out;
 }
 
+// -D name=value: a scene or integrator parameter.
+void addDefine(const std::string& kv, RenderArgs& r) {
+  const size_t eq = kv.find('=');
+  if (eq == std::string::npos || eq == 0) throw Error("-D: expected name=value, got '" + kv + "'");
+  r.defines[kv.substr(0, eq)] = kv.substr(eq + 1);
+}
+
+void addAovs(const std::string& list, RenderArgs& r) {
+  for (const std::string& name : splitCommas(list)) {
+    if (name != "records" && name != "radius" && name != "technique" && name != "contributors")
+      throw Error("--aov: unknown AOV '" + name + "' (known: records, radius, technique, contributors)");
+    r.aovs.push_back(name);
+  }
+}
+
+// --frame-range A,B: frames A..B-1 of the walk.
+void setFrameRange(const std::string& flag, const std::string& v, RenderArgs& r) {
+  const size_t comma = v.find(',');
+  if (comma == std::string::npos) throw Error("--frame-range: expected A,B (frames A..B-1), got '" + v + "'");
+  r.firstFrame = static_cast<int>(parseInteger(flag, v.substr(0, comma), 0, 99999));
+  r.endFrame = static_cast<int>(parseInteger(flag, v.substr(comma + 1), 1, 100000));
+}
+
+// The options that only make sense together, checked once all are read.
+void checkOptionCombinations(const RenderArgs& r) {
+  if (r.scenePath.empty()) throw Error("no scene file given");
+  if ((r.frames > 0) != !r.cameraPath.empty()) throw Error("--frames and --camera-path go together");
+  if (r.freshFrames && r.frames == 0) throw Error("--fresh-frames: only with --frames N");
+  if (r.endFrame > 0 && (r.frames == 0 || r.firstFrame >= r.endFrame || r.endFrame > r.frames))
+    throw Error("--frame-range: A,B needs --frames N and 0 <= A < B <= N");
+  if (r.cacheReuse && r.cacheLoad.empty()) throw Error("--cache-reuse: only with --cache-load F");
+  if (r.maxSpp > 0 && r.adaptiveThreshold <= 0.0f) throw Error("--max-spp: only with --adaptive T");
+  if (r.maxSpp > 0 && r.spp > 0 && r.maxSpp < r.spp)
+    throw Error("--max-spp: " + std::to_string(r.maxSpp) + " is below --spp " + std::to_string(r.spp));
+}
+
 }  // namespace
 
 RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
@@ -88,10 +124,7 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
     if (a == "-o" || a == "--output") {
       r.outputPath = cur.value(a);
     } else if (a == "-D") {
-      const std::string kv = cur.value(a);
-      const size_t eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0) throw Error("-D: expected name=value, got '" + kv + "'");
-      r.defines[kv.substr(0, eq)] = kv.substr(eq + 1);
+      addDefine(cur.value(a), r);
     } else if (a == "--integrator") {
       r.integrator = cur.value(a);
       if (r.integrator != "auto" && !findIntegrator(r.integrator))
@@ -119,11 +152,7 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
     } else if (a == "--stats") {
       r.statsPath = cur.value(a);
     } else if (a == "--aov") {
-      for (const std::string& name : splitCommas(cur.value(a))) {
-        if (name != "records" && name != "radius" && name != "technique" && name != "contributors")
-          throw Error("--aov: unknown AOV '" + name + "' (known: records, radius, technique, contributors)");
-        r.aovs.push_back(name);
-      }
+      addAovs(cur.value(a), r);
     } else if (a == "--cache-save") {
       r.cacheSave = cur.value(a);
     } else if (a == "--cache-load") {
@@ -139,11 +168,7 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
     } else if (a == "--fresh-frames") {
       r.freshFrames = true;
     } else if (a == "--frame-range") {
-      const std::string v = cur.value(a);
-      const size_t comma = v.find(',');
-      if (comma == std::string::npos) throw Error("--frame-range: expected A,B (frames A..B-1), got '" + v + "'");
-      r.firstFrame = static_cast<int>(parseInteger(a, v.substr(0, comma), 0, 99999));
-      r.endFrame = static_cast<int>(parseInteger(a, v.substr(comma + 1), 1, 100000));
+      setFrameRange(a, cur.value(a), r);
     } else if (!a.empty() && a[0] == '-') {
       throw Error("unknown option '" + a + "'");
     } else if (r.scenePath.empty()) {
@@ -152,15 +177,7 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
       throw Error("unexpected argument '" + a + "' (scene already given: '" + r.scenePath + "')");
     }
   }
-  if (r.scenePath.empty()) throw Error("no scene file given");
-  if ((r.frames > 0) != !r.cameraPath.empty()) throw Error("--frames and --camera-path go together");
-  if (r.freshFrames && r.frames == 0) throw Error("--fresh-frames: only with --frames N");
-  if (r.endFrame > 0 && (r.frames == 0 || r.firstFrame >= r.endFrame || r.endFrame > r.frames))
-    throw Error("--frame-range: A,B needs --frames N and 0 <= A < B <= N");
-  if (r.cacheReuse && r.cacheLoad.empty()) throw Error("--cache-reuse: only with --cache-load F");
-  if (r.maxSpp > 0 && r.adaptiveThreshold <= 0.0f) throw Error("--max-spp: only with --adaptive T");
-  if (r.maxSpp > 0 && r.spp > 0 && r.maxSpp < r.spp)
-    throw Error("--max-spp: " + std::to_string(r.maxSpp) + " is below --spp " + std::to_string(r.spp));
+  checkOptionCombinations(r);
   return r;
 }
 

@@ -29,6 +29,43 @@ constexpr int kMaxBandRounds = 4;
 // Samples of one pixel on surfaces whose normals agree this closely share one cache lookup.
 constexpr float kSharedLookupMinCos = 0.995f;
 
+// The RNG streams, film positions and camera rays of the samples of active pixels [jb, je), in
+// sample order; `first` is the offset of the chunk's first sample.
+void generateCameraRays(const RcacheRun& run, const Film& film, int y0, const SampleRange* ranges,
+                        const std::vector<size_t>& offset, const std::vector<uint32_t>& active, size_t jb, size_t je,
+                        size_t first, std::vector<Rng>& rngs, std::vector<Ray>& rays, std::vector<Vec2>& filmPos) {
+  const int W = run.width;
+  for (size_t j = jb; j < je; ++j) {
+    const size_t q = active[j];
+    const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
+    for (int si = ranges[q].first; si < ranges[q].end; ++si) {
+      const size_t k = offset[q] + (si - ranges[q].first) - first;
+      // Streams keyed by the sensor pixel: a crop window draws what the full render draws there.
+      rngs.push_back(pixelRng(run.seed, film.sensorWidth(), film.cropX() + x, film.cropY() + y, si,
+                              run.lowDiscrepancy));
+      const Vec2 crop(static_cast<float>(film.cropX()), static_cast<float>(film.cropY()));
+      filmPos[k] = Vec2(static_cast<float>(x), static_cast<float>(y)) + crop + rngs[k].next2D() - crop;
+      rays[k] = run.camera.generate(filmPos[k]);
+    }
+  }
+}
+
+// The pixel's earlier representative whose lookup sample `sp` may share (same surface, normals
+// agreeing, fewer than shareGroup users so far; its count is raised), or `self`.
+uint32_t sharedRepresentative(const std::vector<Primary>& prim, const std::vector<uint32_t>& pixelReps,
+                              std::vector<int>& repShares, int shareGroup, const ShadePoint& sp, uint32_t self) {
+  for (size_t k = 0; k < pixelReps.size(); ++k) {
+    const uint32_t r = pixelReps[k];
+    const ShadePoint& o = prim[r].sp;
+    if (repShares[k] < shareGroup && o.hit.bsdf == sp.hit.bsdf && o.hit.mesh == sp.hit.mesh &&
+        o.hit.sphere == sp.hit.sphere && glm::dot(o.frame.n, sp.frame.n) > kSharedLookupMinCos) {
+      ++repShares[k];
+      return r;
+    }
+  }
+  return self;
+}
+
 }  // namespace
 
 RcacheAovs parseRcacheAovs(const std::vector<std::string>& names) {
@@ -148,19 +185,7 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
     std::vector<Ray> rays(count);
     std::vector<Hit> hits(count);
     std::vector<Vec2> filmPos(count);
-    for (size_t j = jb; j < je; ++j) {
-      const size_t q = active[j];
-      const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
-      for (int si = ranges[q].first; si < ranges[q].end; ++si) {
-        const size_t k = offset[q] + (si - ranges[q].first) - first;
-        // Streams keyed by the sensor pixel: a crop window draws what the full render draws there.
-        rngs.push_back(pixelRng(run_.seed, film_.sensorWidth(), film_.cropX() + x, film_.cropY() + y, si,
-                                run_.lowDiscrepancy));
-        const Vec2 crop(static_cast<float>(film_.cropX()), static_cast<float>(film_.cropY()));
-        filmPos[k] = Vec2(static_cast<float>(x), static_cast<float>(y)) + crop + rngs[k].next2D() - crop;
-        rays[k] = run_.camera.generate(filmPos[k]);
-      }
-    }
+    generateCameraRays(run_, film_, y0, ranges, offset, active, jb, je, first, rngs, rays, filmPos);
     run_.ctx.accel.intersect(rays.data(), hits.data(), count, true);
     for (size_t j = jb; j < je; ++j) {
       const size_t q = active[j];
@@ -190,18 +215,8 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
         continueLowDiscrepancy(sp, rng);
         s.rep[i] = static_cast<uint32_t>(i);
         const bool cached = sp.active && isCached(run_.engine.technique(sp));
-        if (params.sharePixel && cached) {
-          for (size_t k = 0; k < pixelReps.size(); ++k) {
-            const uint32_t r = pixelReps[k];
-            const ShadePoint& o = s.prim[r].sp;
-            if (repShares[k] < shareGroup && o.hit.bsdf == sp.hit.bsdf && o.hit.mesh == sp.hit.mesh &&
-                o.hit.sphere == sp.hit.sphere && glm::dot(o.frame.n, sp.frame.n) > kSharedLookupMinCos) {
-              s.rep[i] = r;
-              ++repShares[k];
-              break;
-            }
-          }
-        }
+        if (params.sharePixel && cached)
+          s.rep[i] = sharedRepresentative(s.prim, pixelReps, repShares, shareGroup, sp, static_cast<uint32_t>(i));
         if (s.rep[i] == i && cached) {
           pixelReps.push_back(static_cast<uint32_t>(i));
           repShares.push_back(1);

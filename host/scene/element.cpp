@@ -51,42 +51,75 @@ float toFloat(double v) {
 
 Vec3 toVec3(const std::vector<double>& v) { return Vec3(toFloat(v[0]), toFloat(v[1]), toFloat(v[2])); }
 
-// Parses one property element into `p` (and its text form into `raw`).
-void parseProperty(const pugi::xml_node& node, const std::string& tag, bool emitter, Property& p, std::string& raw) {
+// Rejects any attribute of `node` not in `names`.
+void allowAttributes(const pugi::xml_node& node, std::initializer_list<const char*> names) {
+  for (const pugi::xml_attribute& a : node.attributes()) {
+    bool ok = false;
+    for (const char* n : names) ok = ok || std::string(a.name()) == n;
+    if (!ok) throw Error(std::string("unsupported attribute '") + a.name() + "'");
+  }
+}
+
+// <point>/<vector>: either value="x, y, z" or separate x/y/z attributes (missing ones are 0).
+void parseVectorProperty(const pugi::xml_node& node, const std::string& tag, Property& p, std::string& raw) {
   const pugi::xml_attribute value = node.attribute("value");
-  auto allow = [&](std::initializer_list<const char*> names) {
-    for (const pugi::xml_attribute& a : node.attributes()) {
-      bool ok = false;
-      for (const char* n : names) ok = ok || std::string(a.name()) == n;
-      if (!ok) throw Error(std::string("unsupported attribute '") + a.name() + "'");
-    }
-  };
-  auto needValue = [&]() -> std::string {
-    if (!value) throw Error("missing attribute 'value'");
-    return value.value();
-  };
-  if (tag == "point" || tag == "vector") {
-    allow({"name", "value", "x", "y", "z"});
-    p.type = tag == "point" ? Property::Type::Point : Property::Type::Vector;
-    if (value) {
-      if (node.attribute("x") || node.attribute("y") || node.attribute("z"))
-        throw Error("give either 'value' or x/y/z, not both");
-      const std::vector<double> v = parseNumberList(value.value());
-      if (v.size() != 3) throw Error("needs 3 numbers, got " + std::to_string(v.size()));
-      p.vec = toVec3(v);
-      raw = value.value();
-    } else {
-      auto comp = [&](const char* n) {
-        const pugi::xml_attribute a = node.attribute(n);
-        return a ? toFloat(parseNumber(a.value())) : 0.0f;
-      };
-      p.vec = Vec3(comp("x"), comp("y"), comp("z"));
-      raw = std::to_string(p.vec.x) + ", " + std::to_string(p.vec.y) + ", " + std::to_string(p.vec.z);
-    }
+  allowAttributes(node, {"name", "value", "x", "y", "z"});
+  p.type = tag == "point" ? Property::Type::Point : Property::Type::Vector;
+  if (value) {
+    if (node.attribute("x") || node.attribute("y") || node.attribute("z"))
+      throw Error("give either 'value' or x/y/z, not both");
+    const std::vector<double> v = parseNumberList(value.value());
+    if (v.size() != 3) throw Error("needs 3 numbers, got " + std::to_string(v.size()));
+    p.vec = toVec3(v);
+    raw = value.value();
+  } else {
+    auto comp = [&](const char* n) {
+      const pugi::xml_attribute a = node.attribute(n);
+      return a ? toFloat(parseNumber(a.value())) : 0.0f;
+    };
+    p.vec = Vec3(comp("x"), comp("y"), comp("z"));
+    raw = std::to_string(p.vec.x) + ", " + std::to_string(p.vec.y) + ", " + std::to_string(p.vec.z);
+  }
+}
+
+// <spectrum>. As Mitsuba's RGB variants (spectrum_rgb.h): wavelength:value pairs are projected to
+// sRGB (reflectances bounded and under D65, emitters neither, η/k unbounded); a single value is
+// grey, except on an emitter, where Mitsuba gives it the sRGB colour of a flat spectrum.
+void parseSpectrumProperty(const pugi::xml_node& node, const std::string& raw, bool emitter, Property& p) {
+  p.type = Property::Type::Rgb;
+  if (raw.find(':') == std::string::npos) {
+    const std::vector<double> v = parseNumberList(raw);
+    if (v.size() != 1) throw Error("a spectrum is one value or wavelength:value pairs");
+    p.vec = emitter ? uniformEmitterSpectrumRgb(toFloat(v[0])) : Vec3(toFloat(v[0]));
     return;
   }
-  allow({"name", "value"});
-  raw = needValue();
+  std::vector<double> wavelengths, values;
+  std::string pairs = raw;
+  for (char& c : pairs)
+    if (c == ',') c = ' ';
+  std::istringstream in(pairs);
+  for (std::string token; in >> token;) {
+    const size_t colon = token.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == token.size())
+      throw Error("spectrum entry '" + token + "' is not wavelength:value");
+    wavelengths.push_back(parseNumber(token.substr(0, colon)));
+    values.push_back(parseNumber(token.substr(colon + 1)));
+  }
+  const std::string name = node.attribute("name").value();
+  const bool unbounded = name == "eta" || name == "k";
+  p.vec = spectrumToRgb(wavelengths, values, !(emitter || unbounded), !emitter);
+}
+
+// Parses one property element into `p` (and its text form into `raw`).
+void parseProperty(const pugi::xml_node& node, const std::string& tag, bool emitter, Property& p, std::string& raw) {
+  if (tag == "point" || tag == "vector") {
+    parseVectorProperty(node, tag, p, raw);
+    return;
+  }
+  const pugi::xml_attribute value = node.attribute("value");
+  allowAttributes(node, {"name", "value"});
+  if (!value) throw Error("missing attribute 'value'");
+  raw = value.value();
   if (tag == "integer") {
     p.type = Property::Type::Integer;
     p.number = double(parseInteger(raw));
@@ -107,31 +140,7 @@ void parseProperty(const pugi::xml_node& node, const std::string& tag, bool emit
     else if (v.size() == 3) p.vec = toVec3(v);
     else throw Error("rgb needs 1 or 3 numbers, got " + std::to_string(v.size()));
   } else if (tag == "spectrum") {
-    // As Mitsuba's RGB variants (spectrum_rgb.h): wavelength:value pairs are projected to sRGB
-    // (reflectances bounded and under D65, emitters neither, η/k unbounded); a single value is
-    // grey, except on an emitter, where Mitsuba gives it the sRGB colour of a flat spectrum.
-    p.type = Property::Type::Rgb;
-    if (raw.find(':') == std::string::npos) {
-      const std::vector<double> v = parseNumberList(raw);
-      if (v.size() != 1) throw Error("a spectrum is one value or wavelength:value pairs");
-      p.vec = emitter ? uniformEmitterSpectrumRgb(toFloat(v[0])) : Vec3(toFloat(v[0]));
-      return;
-    }
-    std::vector<double> wavelengths, values;
-    std::string pairs = raw;
-    for (char& c : pairs)
-      if (c == ',') c = ' ';
-    std::istringstream in(pairs);
-    for (std::string token; in >> token;) {
-      const size_t colon = token.find(':');
-      if (colon == std::string::npos || colon == 0 || colon + 1 == token.size())
-        throw Error("spectrum entry '" + token + "' is not wavelength:value");
-      wavelengths.push_back(parseNumber(token.substr(0, colon)));
-      values.push_back(parseNumber(token.substr(colon + 1)));
-    }
-    const std::string name = node.attribute("name").value();
-    const bool unbounded = name == "eta" || name == "k";
-    p.vec = spectrumToRgb(wavelengths, values, !(emitter || unbounded), !emitter);
+    parseSpectrumProperty(node, raw, emitter, p);
   }
 }
 

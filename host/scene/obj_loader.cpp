@@ -33,16 +33,67 @@ long long resolveIndex(const std::string& text, size_t count, const char* what) 
   return r;
 }
 
-}  // namespace
-
-MeshData loadObj(const std::string& path, bool flipTexCoords) {
-  requireRegularFile(path, "mesh file");
-  std::ifstream in(path);
-  if (!in) throw Error("cannot open mesh file '" + path + "'");
-
+// What the OBJ file declares, before corners are deduplicated into mesh vertices.
+struct ObjData {
   std::vector<Vec3> v, vn;
   std::vector<Vec2> vt;
   std::vector<Corner> corners;  // three per triangle
+};
+
+// Parses one face corner "v", "v/vt", "v//vn" or "v/vt/vn" against the data declared so far.
+Corner parseCorner(const std::string& a, const ObjData& d) {
+  Corner c;
+  const size_t s1 = a.find('/');
+  const size_t s2 = s1 == std::string::npos ? std::string::npos : a.find('/', s1 + 1);
+  c.v = resolveIndex(a.substr(0, s1), d.v.size(), "vertex");
+  if (s1 != std::string::npos) {
+    const std::string t = a.substr(s1 + 1, s2 == std::string::npos ? std::string::npos : s2 - s1 - 1);
+    if (!t.empty()) c.vt = resolveIndex(t, d.vt.size(), "texture coordinate");
+    if (s2 != std::string::npos) c.vn = resolveIndex(a.substr(s2 + 1), d.vn.size(), "normal");
+  }
+  return c;
+}
+
+// Applies one command line (already split into `cmd` and `args`); unknown commands are ignored.
+void parseCommand(const std::string& cmd, const std::vector<std::string>& args, bool flipTexCoords, ObjData& d) {
+  auto need = [&](size_t n) {
+    if (args.size() < n)
+      throw Error("'" + cmd + "' needs " + std::to_string(n) + " values, got " + std::to_string(args.size()));
+  };
+  // Vertex data may hold NaN/Inf in a broken file; they are kept and the triangles using them
+  // are dropped (and counted) by the mesh builder, so parse with strtod semantics here.
+  auto num = [&](const std::string& s) {
+    char* end = nullptr;
+    const double dv = std::strtod(s.c_str(), &end);
+    if (end != s.c_str() + s.size()) throw Error("'" + s + "' is not a number");
+    return float(dv);
+  };
+  if (cmd == "v") {
+    need(3);
+    d.v.emplace_back(num(args[0]), num(args[1]), num(args[2]));
+  } else if (cmd == "vn") {
+    need(3);
+    d.vn.emplace_back(num(args[0]), num(args[1]), num(args[2]));
+  } else if (cmd == "vt") {
+    need(1);
+    const float s = num(args[0]);
+    const float t = args.size() > 1 ? num(args[1]) : 0.0f;
+    d.vt.emplace_back(s, flipTexCoords ? 1.0f - t : t);
+  } else if (cmd == "f") {
+    if (args.size() < 3) throw Error("face needs at least 3 vertices, got " + std::to_string(args.size()));
+    std::vector<Corner> face;
+    for (const std::string& a : args) face.push_back(parseCorner(a, d));
+    for (size_t k = 1; k + 1 < face.size(); ++k) {
+      d.corners.push_back(face[0]);
+      d.corners.push_back(face[k]);
+      d.corners.push_back(face[k + 1]);
+    }
+  }
+}
+
+// Reads every line; errors name path:line.
+ObjData parseObjFile(std::ifstream& in, const std::string& path, bool flipTexCoords) {
+  ObjData d;
   std::string line;
   int lineNo = 0;
   while (std::getline(in, line)) {
@@ -57,56 +108,17 @@ MeshData loadObj(const std::string& path, bool flipTexCoords) {
         if (a[0] == '#') break;
         args.push_back(a);
       }
-      auto need = [&](size_t n) {
-        if (args.size() < n)
-          throw Error("'" + cmd + "' needs " + std::to_string(n) + " values, got " + std::to_string(args.size()));
-      };
-      // Vertex data may hold NaN/Inf in a broken file; they are kept and the triangles using them
-      // are dropped (and counted) by the mesh builder, so parse with strtod semantics here.
-      auto num = [&](const std::string& s) {
-        char* end = nullptr;
-        const double d = std::strtod(s.c_str(), &end);
-        if (end != s.c_str() + s.size()) throw Error("'" + s + "' is not a number");
-        return float(d);
-      };
-      if (cmd == "v") {
-        need(3);
-        v.emplace_back(num(args[0]), num(args[1]), num(args[2]));
-      } else if (cmd == "vn") {
-        need(3);
-        vn.emplace_back(num(args[0]), num(args[1]), num(args[2]));
-      } else if (cmd == "vt") {
-        need(1);
-        const float s = num(args[0]);
-        const float t = args.size() > 1 ? num(args[1]) : 0.0f;
-        vt.emplace_back(s, flipTexCoords ? 1.0f - t : t);
-      } else if (cmd == "f") {
-        if (args.size() < 3) throw Error("face needs at least 3 vertices, got " + std::to_string(args.size()));
-        std::vector<Corner> face;
-        for (const std::string& a : args) {
-          Corner c;
-          const size_t s1 = a.find('/');
-          const size_t s2 = s1 == std::string::npos ? std::string::npos : a.find('/', s1 + 1);
-          c.v = resolveIndex(a.substr(0, s1), v.size(), "vertex");
-          if (s1 != std::string::npos) {
-            const std::string t = a.substr(s1 + 1, s2 == std::string::npos ? std::string::npos : s2 - s1 - 1);
-            if (!t.empty()) c.vt = resolveIndex(t, vt.size(), "texture coordinate");
-            if (s2 != std::string::npos) c.vn = resolveIndex(a.substr(s2 + 1), vn.size(), "normal");
-          }
-          face.push_back(c);
-        }
-        for (size_t k = 1; k + 1 < face.size(); ++k) {
-          corners.push_back(face[0]);
-          corners.push_back(face[k]);
-          corners.push_back(face[k + 1]);
-        }
-      }
+      parseCommand(cmd, args, flipTexCoords, d);
     } catch (const Error& e) {
       throw Error(path + ":" + std::to_string(lineNo) + ": " + e.what());
     }
   }
-  if (in.bad()) throw Error("error reading mesh file '" + path + "'");
+  return d;
+}
 
+// One mesh vertex per distinct corner; normals and uvs only when every corner has them.
+MeshData buildMesh(const ObjData& d) {
+  const std::vector<Corner>& corners = d.corners;
   bool allNormals = !corners.empty(), allUvs = !corners.empty();
   for (const Corner& c : corners) {
     allNormals = allNormals && c.vn != 0;
@@ -122,15 +134,26 @@ MeshData loadObj(const std::string& path, bool flipTexCoords) {
     auto it = index.find(c);
     if (it == index.end()) {
       const uint32_t id = static_cast<uint32_t>(mesh.positions.size());
-      mesh.positions.push_back(v[c.v - 1]);
-      if (allNormals) mesh.normals.push_back(vn[c.vn - 1]);
-      if (allUvs) mesh.uvs.push_back(vt[c.vt - 1]);
+      mesh.positions.push_back(d.v[c.v - 1]);
+      if (allNormals) mesh.normals.push_back(d.vn[c.vn - 1]);
+      if (allUvs) mesh.uvs.push_back(d.vt[c.vt - 1]);
       it = index.emplace(c, id).first;
     }
     ids.push_back(it->second);
   }
   for (size_t i = 0; i + 2 < ids.size(); i += 3) mesh.triangles.emplace_back(ids[i], ids[i + 1], ids[i + 2]);
   return mesh;
+}
+
+}  // namespace
+
+MeshData loadObj(const std::string& path, bool flipTexCoords) {
+  requireRegularFile(path, "mesh file");
+  std::ifstream in(path);
+  if (!in) throw Error("cannot open mesh file '" + path + "'");
+  const ObjData data = parseObjFile(in, path, flipTexCoords);
+  if (in.bad()) throw Error("error reading mesh file '" + path + "'");
+  return buildMesh(data);
 }
 
 }  // namespace rc

@@ -115,22 +115,40 @@ int findProp(const PlyElement& e, std::initializer_list<const char*> names) {
   return -1;
 }
 
-}  // namespace
+// Parses the rest of a "property" header line: a scalar type and name, or "list" count and item types.
+PlyProperty parsePropertyLine(std::istringstream& ls, const std::string& where) {
+  PlyProperty p;
+  std::string t;
+  ls >> t;
+  if (t == "list") {
+    std::string ct, it;
+    ls >> ct >> it >> p.name;
+    p.isList = true;
+    if (!scalarFromName(ct, p.countType) || !scalarFromName(it, p.type) || !isIntegral(p.countType))
+      throw Error(where + "malformed list property");
+  } else {
+    if (!scalarFromName(t, p.type)) throw Error(where + "unknown property type '" + t + "'");
+    ls >> p.name;
+  }
+  if (p.name.empty()) throw Error(where + "property without a name");
+  return p;
+}
 
-MeshData loadPly(const std::string& path) {
-  requireRegularFile(path, "mesh file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open mesh file '" + path + "'");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  const std::string data = ss.str();
-  auto fail = [&](const std::string& msg) -> Error { return Error(path + ": " + msg); };
-
-  // Header: lines up to "end_header".
-  size_t pos = 0;
-  int lineNo = 0;
+// The header's declarations and where the body starts.
+struct PlyHeader {
   std::vector<PlyElement> elements;
-  bool binary = false, sawFormat = false, sawEnd = false;
+  bool binary = false;
+  size_t bodyPos = 0;
+  int lineCount = 0;  // header lines, so body line numbers continue from it
+};
+
+// Reads the header lines up to "end_header"; errors name path:line.
+PlyHeader parseHeader(const std::string& path, const std::string& data) {
+  PlyHeader h;
+  size_t& pos = h.bodyPos;
+  int& lineNo = h.lineCount;
+  std::vector<PlyElement>& elements = h.elements;
+  bool sawFormat = false, sawEnd = false;
   while (pos < data.size() && !sawEnd) {
     size_t eol = data.find('\n', pos);
     if (eol == std::string::npos) eol = data.size();
@@ -150,8 +168,8 @@ MeshData loadPly(const std::string& path) {
     if (kw == "format") {
       std::string fmt;
       ls >> fmt;
-      if (fmt == "ascii") binary = false;
-      else if (fmt == "binary_little_endian") binary = true;
+      if (fmt == "ascii") h.binary = false;
+      else if (fmt == "binary_little_endian") h.binary = true;
       else throw Error(where + "unsupported PLY format '" + fmt + "' (ascii and binary_little_endian are supported)");
       sawFormat = true;
     } else if (kw == "element") {
@@ -167,88 +185,112 @@ MeshData loadPly(const std::string& path) {
       elements.push_back(e);
     } else if (kw == "property") {
       if (elements.empty()) throw Error(where + "property before any element");
-      PlyProperty p;
-      std::string t;
-      ls >> t;
-      if (t == "list") {
-        std::string ct, it;
-        ls >> ct >> it >> p.name;
-        p.isList = true;
-        if (!scalarFromName(ct, p.countType) || !scalarFromName(it, p.type) || !isIntegral(p.countType))
-          throw Error(where + "malformed list property");
-      } else {
-        if (!scalarFromName(t, p.type)) throw Error(where + "unknown property type '" + t + "'");
-        ls >> p.name;
-      }
-      if (p.name.empty()) throw Error(where + "property without a name");
-      elements.back().props.push_back(p);
+      elements.back().props.push_back(parsePropertyLine(ls, where));
     } else if (kw == "end_header") {
       sawEnd = true;
     } else {
       throw Error(where + "unknown header keyword '" + kw + "'");
     }
   }
-  if (!sawEnd) throw fail("header has no 'end_header'");
-  if (!sawFormat) throw fail("header has no 'format' line");
+  if (!sawEnd) throw Error(path + ": " + "header has no 'end_header'");
+  if (!sawFormat) throw Error(path + ": " + "header has no 'format' line");
+  return h;
+}
 
+// Which property index holds each vertex attribute or the face's index list (-1: absent).
+struct PropertySlots {
+  int x = -1, y = -1, z = -1, nx = -1, ny = -1, nz = -1, u = -1, v = -1, indexList = -1;
+  bool hasNormals() const { return nx >= 0 && ny >= 0 && nz >= 0; }
+  bool hasUvs() const { return u >= 0 && v >= 0; }
+};
+
+PropertySlots findSlots(const PlyElement& e, bool isVertex, bool isFace) {
+  PropertySlots s;
+  if (isVertex) {
+    s.x = findProp(e, {"x"}), s.y = findProp(e, {"y"}), s.z = findProp(e, {"z"});
+    if (s.x < 0 || s.y < 0 || s.z < 0) throw Error("element 'vertex' lacks x, y or z");
+    s.nx = findProp(e, {"nx"}), s.ny = findProp(e, {"ny"}), s.nz = findProp(e, {"nz"});
+    s.u = findProp(e, {"u", "s", "texture_u", "texture_s"});
+    s.v = findProp(e, {"v", "t", "texture_v", "texture_t"});
+  }
+  if (isFace) {
+    for (size_t i = 0; i < e.props.size(); ++i)
+      if (e.props[i].isList && (e.props[i].name == "vertex_indices" || e.props[i].name == "vertex_index"))
+        s.indexList = static_cast<int>(i);
+    if (s.indexList < 0) throw Error("element 'face' lacks a 'vertex_indices' list");
+  }
+  return s;
+}
+
+// Reads one list property; the entries of the face's index list go to `face`, checked against
+// the vertices read so far.
+void readList(BodyReader& body, const PlyProperty& prop, bool isIndexList, size_t fileSize, size_t faceNo,
+              size_t vertexCount, std::vector<uint32_t>& face) {
+  const double n = body.read(prop.countType);
+  // Each item takes at least one byte, so a length beyond the file is a lie (and one beyond
+  // size_t's range would make the conversion below undefined).
+  if (n < 0) body.fail("negative list length");
+  if (n > double(fileSize)) body.fail("list length exceeds the file size");
+  for (size_t j = 0; j < static_cast<size_t>(n); ++j) {
+    const double idx = body.read(prop.type);
+    if (isIndexList) {
+      if (!(idx >= 0 && idx < double(vertexCount)))
+        body.fail("face " + std::to_string(faceNo) + ": vertex index " + std::to_string(static_cast<long long>(idx)) +
+                  " out of range (" + std::to_string(vertexCount) + " vertices)");
+      face.push_back(static_cast<uint32_t>(idx));
+    }
+  }
+}
+
+// Reads every item of one element, appending vertices or fan-triangulated faces to the mesh.
+void readElement(BodyReader& body, const PlyElement& e, size_t fileSize, MeshData& mesh) {
+  body.context = "element '" + e.name + "'";
+  const bool isVertex = e.name == "vertex", isFace = e.name == "face";
+  const PropertySlots s = findSlots(e, isVertex, isFace);
+  const bool hasN = s.hasNormals(), hasUv = s.hasUvs();
+  if (e.props.empty()) return;  // nothing to read, however large the count (no empty loop of 2^63)
+  std::vector<double> vals(e.props.size());
+  for (size_t k = 0; k < e.count; ++k) {
+    std::vector<uint32_t> face;
+    for (size_t p = 0; p < e.props.size(); ++p) {
+      const PlyProperty& prop = e.props[p];
+      if (!prop.isList) {
+        vals[p] = body.read(prop.type);
+        continue;
+      }
+      readList(body, prop, static_cast<int>(p) == s.indexList, fileSize, k, mesh.positions.size(), face);
+    }
+    if (isVertex) {
+      mesh.positions.emplace_back(float(vals[s.x]), float(vals[s.y]), float(vals[s.z]));
+      if (hasN) mesh.normals.emplace_back(float(vals[s.nx]), float(vals[s.ny]), float(vals[s.nz]));
+      if (hasUv) mesh.uvs.emplace_back(float(vals[s.u]), float(vals[s.v]));
+    }
+    if (isFace) {
+      if (face.size() < 3) body.fail("face " + std::to_string(k) + " has fewer than 3 vertices");
+      for (size_t j = 1; j + 1 < face.size(); ++j) mesh.triangles.emplace_back(face[0], face[j], face[j + 1]);
+    }
+  }
+}
+
+}  // namespace
+
+MeshData loadPly(const std::string& path) {
+  requireRegularFile(path, "mesh file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot open mesh file '" + path + "'");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  const std::string data = ss.str();
+  auto fail = [&](const std::string& msg) -> Error { return Error(path + ": " + msg); };
+
+  const PlyHeader header = parseHeader(path, data);
   MeshData mesh;
-  BodyReader body(data, pos, binary, lineNo + 1);
+  BodyReader body(data, header.bodyPos, header.binary, header.lineCount + 1);
   bool sawVertex = false;
   try {
-    for (const PlyElement& e : elements) {
-      body.context = "element '" + e.name + "'";
-      const bool isVertex = e.name == "vertex", isFace = e.name == "face";
-      int ix = -1, iy = -1, iz = -1, inx = -1, iny = -1, inz = -1, iu = -1, iv = -1, ilist = -1;
-      if (isVertex) {
-        sawVertex = true;
-        ix = findProp(e, {"x"}), iy = findProp(e, {"y"}), iz = findProp(e, {"z"});
-        if (ix < 0 || iy < 0 || iz < 0) throw Error("element 'vertex' lacks x, y or z");
-        inx = findProp(e, {"nx"}), iny = findProp(e, {"ny"}), inz = findProp(e, {"nz"});
-        iu = findProp(e, {"u", "s", "texture_u", "texture_s"});
-        iv = findProp(e, {"v", "t", "texture_v", "texture_t"});
-      }
-      if (isFace) {
-        for (size_t i = 0; i < e.props.size(); ++i)
-          if (e.props[i].isList && (e.props[i].name == "vertex_indices" || e.props[i].name == "vertex_index"))
-            ilist = static_cast<int>(i);
-        if (ilist < 0) throw Error("element 'face' lacks a 'vertex_indices' list");
-      }
-      const bool hasN = inx >= 0 && iny >= 0 && inz >= 0, hasUv = iu >= 0 && iv >= 0;
-      if (e.props.empty()) continue;  // nothing to read, however large the count (no empty loop of 2^63)
-      std::vector<double> vals(e.props.size());
-      for (size_t k = 0; k < e.count; ++k) {
-        std::vector<uint32_t> face;
-        for (size_t p = 0; p < e.props.size(); ++p) {
-          const PlyProperty& prop = e.props[p];
-          if (!prop.isList) {
-            vals[p] = body.read(prop.type);
-            continue;
-          }
-          const double n = body.read(prop.countType);
-          // Each item takes at least one byte, so a length beyond the file is a lie (and one beyond
-          // size_t's range would make the conversion below undefined).
-          if (n < 0) body.fail("negative list length");
-          if (n > double(data.size())) body.fail("list length exceeds the file size");
-          for (size_t j = 0; j < static_cast<size_t>(n); ++j) {
-            const double idx = body.read(prop.type);
-            if (static_cast<int>(p) == ilist) {
-              if (!(idx >= 0 && idx < double(mesh.positions.size())))
-                body.fail("face " + std::to_string(k) + ": vertex index " + std::to_string(static_cast<long long>(idx)) +
-                          " out of range (" + std::to_string(mesh.positions.size()) + " vertices)");
-              face.push_back(static_cast<uint32_t>(idx));
-            }
-          }
-        }
-        if (isVertex) {
-          mesh.positions.emplace_back(float(vals[ix]), float(vals[iy]), float(vals[iz]));
-          if (hasN) mesh.normals.emplace_back(float(vals[inx]), float(vals[iny]), float(vals[inz]));
-          if (hasUv) mesh.uvs.emplace_back(float(vals[iu]), float(vals[iv]));
-        }
-        if (isFace) {
-          if (face.size() < 3) body.fail("face " + std::to_string(k) + " has fewer than 3 vertices");
-          for (size_t j = 1; j + 1 < face.size(); ++j) mesh.triangles.emplace_back(face[0], face[j], face[j + 1]);
-        }
-      }
+    for (const PlyElement& e : header.elements) {
+      if (e.name == "vertex") sawVertex = true;
+      readElement(body, e, data.size(), mesh);
     }
   } catch (const Error& e) {
     throw fail(e.what());

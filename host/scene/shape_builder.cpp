@@ -28,6 +28,56 @@ bool similarity(const Mat4& m, float& scale) {
   return true;
 }
 
+// The analytic sphere of a <shape type="sphere">, its center and radius taken to world space.
+Sphere makeSphere(const Element& e, const Mat4& toWorld, const std::string& name, bool flip, int material) {
+  Sphere s;
+  s.name = name;
+  const Vec3 center = e.located([&] { return e.props.getVector("center", Vec3(0.0f)); });
+  const float radius = e.located([&] { return e.props.getFloat("radius", 1.0f); });
+  if (!(radius > 0.0f)) e.failParam("radius", "radius must be positive, got " + std::to_string(radius));
+  float scale = 1.0f;
+  if (!similarity(toWorld, scale))
+    e.failParam("to_world", "a sphere's to_world may only rotate, translate and scale uniformly "
+                            "(use an obj/ply mesh for an ellipsoid)");
+  s.center = Vec3(toWorld * Vec4(center, 1.0f));
+  s.radius = radius * scale;
+  s.flipNormals = flip;
+  s.bsdf = material;
+  return s;
+}
+
+// The object-space triangles of a mesh shape, loaded from its file or generated; sets the
+// policy's face_normals where the type takes it. `resolve` turns the filename into a path.
+template <class Resolve>
+MeshData shapeMeshData(const Element& e, MeshPolicy& policy, const Resolve& resolve) {
+  MeshData data;
+  const bool fromFile = e.type == "obj" || e.type == "ply" || e.type == "serialized";
+  if (fromFile || e.type == "cube")
+    policy.faceNormals = e.located([&] { return e.props.getBool("face_normals", false); });
+  if (fromFile) {
+    const std::string fn = e.located([&] { return e.props.getString("filename", ""); });
+    if (fn.empty()) e.fail("missing parameter 'filename'");
+    const std::string path = resolve(fn);
+    if (e.type == "obj") {
+      const bool flipUv = e.located([&] { return e.props.getBool("flip_tex_coords", true); });
+      data = e.located([&] { return loadObj(path, flipUv); });
+    } else if (e.type == "serialized") {
+      const int index = e.located([&] { return e.props.getInt("shape_index", 0); });
+      if (index < 0) e.failParam("shape_index", "'shape_index' must be non-negative");
+      data = e.located([&] { return loadSerialized(path, index); });
+    } else {
+      data = e.located([&] { return loadPly(path); });
+    }
+  } else if (e.type == "rectangle") {
+    data = makeRectangle();
+  } else if (e.type == "cube") {
+    data = makeCube();
+  } else {
+    data = makeDisk(128);
+  }
+  return data;
+}
+
 }  // namespace
 
 void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
@@ -80,49 +130,12 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   int meshIndex = -1, sphereIndex = -1;
 
   if (e.type == "sphere") {
-    Sphere s;
-    s.name = name;
-    const Vec3 center = e.located([&] { return e.props.getVector("center", Vec3(0.0f)); });
-    const float radius = e.located([&] { return e.props.getFloat("radius", 1.0f); });
-    if (!(radius > 0.0f)) e.failParam("radius", "radius must be positive, got " + std::to_string(radius));
-    float scale = 1.0f;
-    if (!similarity(toWorld, scale))
-      e.failParam("to_world", "a sphere's to_world may only rotate, translate and scale uniformly "
-                              "(use an obj/ply mesh for an ellipsoid)");
-    s.center = Vec3(toWorld * Vec4(center, 1.0f));
-    s.radius = radius * scale;
-    s.flipNormals = flip;
-    s.bsdf = material;
     sphereIndex = static_cast<int>(scene_.spheres.size());
-    scene_.spheres.push_back(s);
+    scene_.spheres.push_back(makeSphere(e, toWorld, name, flip, material));
   } else {
-    MeshData data;
     MeshPolicy policy;
     policy.flipNormals = flip;
-    const bool fromFile = e.type == "obj" || e.type == "ply" || e.type == "serialized";
-    if (fromFile || e.type == "cube")
-      policy.faceNormals = e.located([&] { return e.props.getBool("face_normals", false); });
-    if (fromFile) {
-      const std::string fn = e.located([&] { return e.props.getString("filename", ""); });
-      if (fn.empty()) e.fail("missing parameter 'filename'");
-      const std::string path = resolvePath(e, fn);
-      if (e.type == "obj") {
-        const bool flipUv = e.located([&] { return e.props.getBool("flip_tex_coords", true); });
-        data = e.located([&] { return loadObj(path, flipUv); });
-      } else if (e.type == "serialized") {
-        const int index = e.located([&] { return e.props.getInt("shape_index", 0); });
-        if (index < 0) e.failParam("shape_index", "'shape_index' must be non-negative");
-        data = e.located([&] { return loadSerialized(path, index); });
-      } else {
-        data = e.located([&] { return loadPly(path); });
-      }
-    } else if (e.type == "rectangle") {
-      data = makeRectangle();
-    } else if (e.type == "cube") {
-      data = makeCube();
-    } else {
-      data = makeDisk(128);
-    }
+    MeshData data = shapeMeshData(e, policy, [&](const std::string& fn) { return resolvePath(e, fn); });
     Mesh mesh = buildMesh(std::move(data), toWorld, policy);
     if (mesh.triangles.empty())
       unsupported(e.where() + ": the mesh has no valid triangles (" + std::to_string(mesh.degenerateSkipped) +

@@ -58,12 +58,10 @@ struct Scratch {
   std::vector<double> L, rho, wT, wB, cosMid, sinMid, cosLo, sinLo, y, lam, gT, gB;
 };
 
-void projectOne(const ProjectBatch& b, const GradientGeometry& geo, int rec, ProjectResult& out, Scratch& sc) {
-  const int M = b.M, N = b.N, MN = M * N, order = b.order, n2 = order * order;
-  const double phi0 = b.phi0[rec];
+// Radiance (dropped samples → 0) into sc.L; returns how many samples were dropped.
+int gatherRadiance(const ProjectBatch& b, int rec, Scratch& sc) {
+  const int MN = b.M * b.N;
   const float* rad = b.radiance.data() + 3LL * MN * rec;
-
-  // Radiance (dropped samples → 0) and inverse distances (miss → 0, clamp r ≥ minDistance).
   sc.L.assign(3 * MN, 0.0);
   int dropped = 0;
   for (int s = 0; s < MN; ++s) {
@@ -76,60 +74,71 @@ void projectOne(const ProjectBatch& b, const GradientGeometry& geo, int rec, Pro
     sc.L[3 * s + 1] = g;
     sc.L[3 * s + 2] = bl;
   }
-  out.dropped[rec] = dropped;
+  return dropped;
+}
 
-  if (b.gradients) {
-    const float* dist = b.distance.data() + 1LL * MN * rec;
-    sc.rho.resize(MN);
-    for (int s = 0; s < MN; ++s) {
-      const float r = dist[s];
-      sc.rho[s] = (r > 0.0f && std::isfinite(r)) ? 1.0 / std::max(double(r), double(b.minDistance)) : 0.0;
-    }
-    sc.cosMid.resize(N);
-    sc.sinMid.resize(N);
-    sc.cosLo.resize(N);
-    sc.sinLo.resize(N);
+// Inverse distances (miss → 0, clamp r ≥ minDistance) into sc.rho, and the cell-centre and
+// cell-edge azimuth directions into sc.cos/sinMid and sc.cos/sinLo.
+void gatherGradientInputs(const ProjectBatch& b, int rec, double phi0, Scratch& sc) {
+  const int N = b.N, MN = b.M * N;
+  const float* dist = b.distance.data() + 1LL * MN * rec;
+  sc.rho.resize(MN);
+  for (int s = 0; s < MN; ++s) {
+    const float r = dist[s];
+    sc.rho[s] = (r > 0.0f && std::isfinite(r)) ? 1.0 / std::max(double(r), double(b.minDistance)) : 0.0;
+  }
+  sc.cosMid.resize(N);
+  sc.sinMid.resize(N);
+  sc.cosLo.resize(N);
+  sc.sinLo.resize(N);
+  for (int k = 0; k < N; ++k) {
+    const double mid = kTwoPi * (k + 0.5) / N + phi0, lo = kTwoPi * k / N + phi0;
+    sc.cosMid[k] = std::cos(mid);
+    sc.sinMid[k] = std::sin(mid);
+    sc.cosLo[k] = std::cos(lo);
+    sc.sinLo[k] = std::sin(lo);
+  }
+}
+
+// The per-sample gradient weights sc.wT/sc.wB from the radiance differences across cell edges.
+void accumulateEdgeWeights(const ProjectBatch& b, const GradientGeometry& geo, Scratch& sc) {
+  const int M = b.M, N = b.N, MN = M * N;
+  sc.wT.assign(3 * MN, 0.0);
+  sc.wB.assign(3 * MN, 0.0);
+  // Elevation edges j = 1..M−1 between (j−1,k) and (j,k), direction û_k; half to each cell.
+  for (int j = 1; j < M; ++j) {
+    const double f = geo.arc * geo.cj[j] * geo.sj[j];
     for (int k = 0; k < N; ++k) {
-      const double mid = kTwoPi * (k + 0.5) / N + phi0, lo = kTwoPi * k / N + phi0;
-      sc.cosMid[k] = std::cos(mid);
-      sc.sinMid[k] = std::sin(mid);
-      sc.cosLo[k] = std::cos(lo);
-      sc.sinLo[k] = std::sin(lo);
-    }
-    sc.wT.assign(3 * MN, 0.0);
-    sc.wB.assign(3 * MN, 0.0);
-    // Elevation edges j = 1..M−1 between (j−1,k) and (j,k), direction û_k; half to each cell.
-    for (int j = 1; j < M; ++j) {
-      const double f = geo.arc * geo.cj[j] * geo.sj[j];
-      for (int k = 0; k < N; ++k) {
-        const int s = j * N + k, sUp = s - N;
-        const double scale = 0.5 * f * std::max(sc.rho[s], sc.rho[sUp]);
-        for (int c = 0; c < 3; ++c) {
-          const double e = scale * (sc.L[3 * s + c] - sc.L[3 * sUp + c]);
-          sc.wT[3 * s + c] += e * sc.cosMid[k];
-          sc.wT[3 * sUp + c] += e * sc.cosMid[k];
-          sc.wB[3 * s + c] += e * sc.sinMid[k];
-          sc.wB[3 * sUp + c] += e * sc.sinMid[k];
-        }
-      }
-    }
-    // Azimuth edges at φ_{k−} between (j,k−1) and (j,k) (k−1 wraps), direction v̂_k.
-    for (int j = 0; j < M; ++j) {
-      for (int k = 0; k < N; ++k) {
-        const int s = j * N + k, sPrev = j * N + (k + N - 1) % N;
-        const double scale = 0.5 * geo.dTheta[j] * std::max(sc.rho[s], sc.rho[sPrev]);
-        for (int c = 0; c < 3; ++c) {
-          const double a = scale * (sc.L[3 * s + c] - sc.L[3 * sPrev + c]);
-          sc.wT[3 * s + c] -= a * sc.sinLo[k];
-          sc.wT[3 * sPrev + c] -= a * sc.sinLo[k];
-          sc.wB[3 * s + c] += a * sc.cosLo[k];
-          sc.wB[3 * sPrev + c] += a * sc.cosLo[k];
-        }
+      const int s = j * N + k, sUp = s - N;
+      const double scale = 0.5 * f * std::max(sc.rho[s], sc.rho[sUp]);
+      for (int c = 0; c < 3; ++c) {
+        const double e = scale * (sc.L[3 * s + c] - sc.L[3 * sUp + c]);
+        sc.wT[3 * s + c] += e * sc.cosMid[k];
+        sc.wT[3 * sUp + c] += e * sc.cosMid[k];
+        sc.wB[3 * s + c] += e * sc.sinMid[k];
+        sc.wB[3 * sUp + c] += e * sc.sinMid[k];
       }
     }
   }
+  // Azimuth edges at φ_{k−} between (j,k−1) and (j,k) (k−1 wraps), direction v̂_k.
+  for (int j = 0; j < M; ++j) {
+    for (int k = 0; k < N; ++k) {
+      const int s = j * N + k, sPrev = j * N + (k + N - 1) % N;
+      const double scale = 0.5 * geo.dTheta[j] * std::max(sc.rho[s], sc.rho[sPrev]);
+      for (int c = 0; c < 3; ++c) {
+        const double a = scale * (sc.L[3 * s + c] - sc.L[3 * sPrev + c]);
+        sc.wT[3 * s + c] -= a * sc.sinLo[k];
+        sc.wT[3 * sPrev + c] -= a * sc.sinLo[k];
+        sc.wB[3 * s + c] += a * sc.cosLo[k];
+        sc.wB[3 * sPrev + c] += a * sc.cosLo[k];
+      }
+    }
+  }
+}
 
-  // One pass over the samples: Λ and (if asked) the gradient projections.
+// One pass over the samples: Λ into sc.lam and (if asked) the gradient projections into sc.gT/sc.gB.
+void projectSamples(const ProjectBatch& b, double phi0, Scratch& sc) {
+  const int M = b.M, N = b.N, order = b.order, n2 = order * order;
   sc.y.resize(n2);
   sc.lam.assign(3 * n2, 0.0);
   if (b.gradients) {
@@ -160,6 +169,17 @@ void projectOne(const ProjectBatch& b, const GradientGeometry& geo, int rec, Pro
       }
     }
   }
+}
+
+void projectOne(const ProjectBatch& b, const GradientGeometry& geo, int rec, ProjectResult& out, Scratch& sc) {
+  const int MN = b.M * b.N, n2 = b.order * b.order;
+  const double phi0 = b.phi0[rec];
+  out.dropped[rec] = gatherRadiance(b, rec, sc);
+  if (b.gradients) {
+    gatherGradientInputs(b, rec, phi0, sc);
+    accumulateEdgeWeights(b, geo, sc);
+  }
+  projectSamples(b, phi0, sc);
   const double cellArea = kTwoPi / MN;
   const size_t base = 3ULL * n2 * rec;
   for (int i = 0; i < 3 * n2; ++i) {
