@@ -71,6 +71,57 @@ bool usesLowDiscrepancy(const RenderContext& ctx) {
 
 namespace {
 
+// Samples per shading chunk of a tile row: large enough for a coherent ray stream, small enough
+// that cancellation, checked between chunks, stops the render promptly.
+constexpr size_t kChunkSamples = 4096;
+
+// The first pixel after `px` in row `row` such that [px, end) holds at least kChunkSamples samples
+// or the tile row ends; `n` receives their number.
+int chunkEnd(const std::vector<SampleRange>& ranges, size_t row, int px, int x1, size_t& n) {
+  n = 0;
+  for (; px < x1 && n < kChunkSamples; ++px)
+    n += static_cast<size_t>(std::max(0, ranges[row + px].end - ranges[row + px].first));
+  return px;
+}
+
+// Fills the RNG streams and film positions of pixels [x0, x1) of row `py` in place (the arrays
+// hold at least their samples): a sample's Rng and input are written once, where they stay.
+// Streams are keyed by the sensor pixel and jittered on the sensor, then moved into the crop
+// window: exact, so the camera, which moves it back, sees the bits a full render sees.
+void fillChunk(const Film& film, const RenderLoopSettings& settings, const std::vector<SampleRange>& ranges,
+               size_t row, int py, int x0, int x1, std::vector<Rng>& rngs, std::vector<SampleInput>& inputs) {
+  const Vec2 cropOrigin(static_cast<float>(film.cropX()), static_cast<float>(film.cropY()));
+  size_t k = 0;
+  for (int x = x0; x < x1; ++x) {
+    const int sx = film.cropX() + x, sy = film.cropY() + py;
+    const PixelRngSeed pixelSeed = pixelRngSeed(settings.seed, film.sensorWidth(), sx, sy, settings.lowDiscrepancy);
+    const Vec2 onSensorPixel(static_cast<float>(sx), static_cast<float>(sy));
+    for (int s = ranges[row + x].first; s < ranges[row + x].end; ++s, ++k) {
+      seedPixelRng(rngs[k], pixelSeed, s);
+      SampleInput& in = inputs[k];
+      in.px = x;
+      in.py = py;
+      in.sampleIndex = s;
+      in.filmPos = (onSensorPixel + rngs[k].next2D()) - cropOrigin;
+      in.cameraRay = nullptr;
+      in.cameraHit = nullptr;
+    }
+  }
+}
+
+// Traces the chunk's n camera rays as one stream and points each input at its ray and hit.
+void traceCameraRays(const RenderContext& ctx, const RenderLoopSettings& settings, SampleInput* inputs, size_t n,
+                     std::vector<Ray>& rays, std::vector<Hit>& hits) {
+  rays.resize(n);
+  hits.resize(n);
+  for (size_t i = 0; i < n; ++i) rays[i] = settings.cameraRay(inputs[i].filmPos);
+  ctx.accel.intersect(rays.data(), hits.data(), n, true);
+  for (size_t i = 0; i < n; ++i) {
+    inputs[i].cameraRay = &rays[i];
+    inputs[i].cameraHit = &hits[i];
+  }
+}
+
 // The sample loop shared by renderSamples and renderSampleBatches: per tile row (in chunks of whole
 // pixels when the row holds many samples), the samples' RNG streams, film positions, camera rays
 // and their hits traced as one coherent stream, then `shadeRow(inputs, rngs, n, radiance)`, then
@@ -93,51 +144,19 @@ RenderLoopResult sampleLoop(const RenderContext& ctx, Film& film, const RenderLo
     std::vector<Ray> rays;
     std::vector<Hit> hits;
     std::vector<Color> radiance;
-    // Cancellation is checked per pixel, not only per tile: at high spp one tile is minutes of
-    // work, and SIGINT/SIGTERM must stop the render promptly (the partial tile is kept). A row is
-    // therefore shaded in chunks of whole pixels, each large enough for a coherent ray stream.
-    constexpr size_t kChunkSamples = 4096;
+    // Cancellation is checked per chunk of whole pixels, not only per tile: at high spp one tile is
+    // minutes of work, and SIGINT/SIGTERM must stop the render promptly (the partial tile is kept).
     auto cancelled = [&] { return ctx.cancel && ctx.cancel->load(std::memory_order_relaxed); };
     for (int py = tile.y0(); py < tile.y1() && !cancelled(); ++py) {
       const size_t row = static_cast<size_t>(py) * width;
       for (int px = tile.x0(); px < tile.x1() && !cancelled();) {
-        // The chunk's pixels (whole pixels, at least kChunkSamples samples or the rest of the row),
-        // sized first and filled in place: a sample's Rng and input are written once, where they stay.
         const int chunkBegin = px;
         size_t n = 0;
-        for (; px < tile.x1() && n < kChunkSamples; ++px)
-          n += static_cast<size_t>(std::max(0, ranges[row + px].end - ranges[row + px].first));
+        px = chunkEnd(ranges, row, px, tile.x1(), n);
         if (n == 0) continue;
         if (rngs.size() < n) rngs.resize(n), inputs.resize(n);
-        size_t k = 0;
-        for (int x = chunkBegin; x < px; ++x) {
-          // Streams keyed by the sensor pixel and jittered on the sensor, then moved into the crop
-          // window: exact, so the camera, which moves it back, sees the bits a full render sees.
-          const int sx = film.cropX() + x, sy = film.cropY() + py;
-          const PixelRngSeed pixelSeed = pixelRngSeed(settings.seed, film.sensorWidth(), sx, sy, settings.lowDiscrepancy);
-          const Vec2 onSensorPixel(static_cast<float>(sx), static_cast<float>(sy));
-          const Vec2 cropOrigin(static_cast<float>(film.cropX()), static_cast<float>(film.cropY()));
-          for (int s = ranges[row + x].first; s < ranges[row + x].end; ++s, ++k) {
-            seedPixelRng(rngs[k], pixelSeed, s);
-            SampleInput& in = inputs[k];
-            in.px = x;
-            in.py = py;
-            in.sampleIndex = s;
-            in.filmPos = (onSensorPixel + rngs[k].next2D()) - cropOrigin;
-            in.cameraRay = nullptr;
-            in.cameraHit = nullptr;
-          }
-        }
-        if (batch) {
-          rays.resize(n);
-          hits.resize(n);
-          for (size_t i = 0; i < n; ++i) rays[i] = settings.cameraRay(inputs[i].filmPos);
-          ctx.accel.intersect(rays.data(), hits.data(), n, true);
-          for (size_t i = 0; i < n; ++i) {
-            inputs[i].cameraRay = &rays[i];
-            inputs[i].cameraHit = &hits[i];
-          }
-        }
+        fillChunk(film, settings, ranges, row, py, chunkBegin, px, rngs, inputs);
+        if (batch) traceCameraRays(ctx, settings, inputs.data(), n, rays, hits);
         radiance.resize(n);
         shadeRow(inputs.data(), rngs.data(), n, radiance.data(), tile);
         for (size_t k = 0; k < n; ++k) {
