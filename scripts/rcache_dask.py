@@ -76,24 +76,21 @@ def film_of(scene_path, defines):
     if rfilter is not None and rfilter.get("type") == "box":
         border = 0
     elif rfilter is not None and rfilter.get("type") == "tent":
-        radius = 1.0
-        for node in rfilter:
-            if node.get("name") == "radius":
-                try:
-                    radius = float(_substitute(node.get("value"), params))
-                except ValueError:
-                    radius = 64.0  # unresolved: the largest rcache accepts
-        border = math.ceil(radius) + 1
+        border = math.ceil(_filter_param(rfilter, "radius", 1.0, 64.0, params)) + 1
     elif rfilter is not None:
-        stddev = 0.5
-        for node in rfilter:
-            if node.get("name") == "stddev":
-                try:
-                    stddev = float(_substitute(node.get("value"), params))
-                except ValueError:
-                    stddev = 16.0  # unresolved: the largest rcache accepts
-        border = math.ceil(4.0 * stddev) + 1
+        border = math.ceil(4.0 * _filter_param(rfilter, "stddev", 0.5, 16.0, params)) + 1
     return width, height, border
+
+
+def _filter_param(rfilter, name, default, largest, params):
+    """A reconstruction filter's float parameter; `largest` (the most rcache accepts) when unresolved."""
+    for node in rfilter:
+        if node.get("name") == name:
+            try:
+                return float(_substitute(node.get("value"), params))
+            except ValueError:
+                return largest
+    return default
 
 
 def make_tiles(width, height, tiles_x, tiles_y, border):
