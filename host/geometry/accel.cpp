@@ -381,6 +381,17 @@ struct alignas(64) Packet16 {
   }
 };
 constexpr size_t kOcclusionStream = 256;
+
+// Runs `query(packet, first, n)` over the rays in packets of 16 (the last one partial).
+template <class Query>
+void forEachPacket16(const Ray* rays, size_t count, const Query& query) {
+  Packet16 p;
+  for (size_t b = 0; b < count; b += 16) {
+    const size_t n = std::min<size_t>(16, count - b);
+    p.load(rays + b, n);
+    query(p, b, n);
+  }
+}
 }  // namespace
 
 void Accel::intersectBatch(const Ray* rays, Hit* hits, size_t count, BatchQuery query) const {
@@ -393,19 +404,15 @@ void Accel::intersectBatch(const Ray* rays, Hit* hits, size_t count, BatchQuery 
     case BatchQuery::Stream:
       intersectStream(rays, hits, count, false);
       return;
-    case BatchQuery::Packet16: {
-      Packet16 p;
-      for (size_t b = 0; b < count; b += 16) {
-        const size_t n = std::min<size_t>(16, count - b);
-        p.load(rays + b, n);
+    case BatchQuery::Packet16:
+      forEachPacket16(rays, count, [&](Packet16& p, size_t b, size_t n) {
         rtcIntersect16(p.valid, impl_->scene, &context, &p.rh);
         impl_->check("intersect");
         for (size_t i = 0; i < n; ++i)
           hits[b + i] = hitOf(rays[b + i], p.rh.hit.geomID[i], p.rh.hit.primID[i], p.rh.hit.u[i], p.rh.hit.v[i],
                               p.rh.ray.tfar[i]);
-      }
+      });
       break;
-    }
   }
   impl_->rays.add(count);
 }
@@ -430,17 +437,13 @@ void Accel::occludedBatch(const Ray* rays, uint8_t* blocked, size_t count, Batch
       }
       break;
     }
-    case BatchQuery::Packet16: {
-      Packet16 p;
-      for (size_t b = 0; b < count; b += 16) {
-        const size_t n = std::min<size_t>(16, count - b);
-        p.load(rays + b, n);
+    case BatchQuery::Packet16:
+      forEachPacket16(rays, count, [&](Packet16& p, size_t b, size_t n) {
         rtcOccluded16(p.valid, impl_->scene, &context, &p.rh.ray);
         impl_->check("occluded");
         for (size_t i = 0; i < n; ++i) blocked[b + i] = isBlocked(p.rh.ray.tfar[i]) ? 1 : 0;
-      }
+      });
       break;
-    }
   }
   impl_->rays.add(count);
 }
