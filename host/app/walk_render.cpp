@@ -93,6 +93,7 @@ RenderStats renderWalk(const WalkJob& job) {
         .field("records", stats.get("records"))
         .field("records_reused", stats.get("records_loaded"))
         .field("records_added", stats.get("records_added"))
+        .field("records_too_coarse", stats.get("records_too_coarse"))
         .endObject();
     job.bar.update("frames", f + 1, ra.frames);
     if (f == 0) total.setText("integrator", job.integrator.name());

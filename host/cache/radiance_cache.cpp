@@ -90,6 +90,7 @@ void RadianceCache::lookupLocked(const Vec3& p, const Vec3& n, Lookup& out, bool
   out.sameNormal = true;
   const float scale2 = scale * scale;
   auto test = [&](uint32_t id) {
+    if (id < skipped_.size() && skipped_[id]) return;
     // w_i > 1/a_i needs ‖p − p_i‖ < a_i·R_i: most octree candidates fail this on 16 bytes,
     // before the full weight reads the record.
     const glm::vec4& sph = spheres_[id];
@@ -140,6 +141,12 @@ void RadianceCache::shrinkA(uint32_t id, float newA, float aMin) {
   if (id >= infos_.size()) return;
   infos_[id].a = std::max(aMin, std::min(infos_[id].a, newA));
   spheres_[id] = influenceSphere(infos_[id]);
+}
+
+void RadianceCache::setSkipped(std::vector<uint8_t> skipped) {
+  std::unique_lock lock(mutex_);
+  skipped.resize(std::min(skipped.size(), infos_.size()));
+  skipped_ = std::move(skipped);
 }
 
 RecordInfo RadianceCache::info(uint32_t id) const {

@@ -86,6 +86,10 @@ class RadianceCache {
   Color cosineIrradiance(const Lookup& lk, const Vec3& n, bool gradients) const;
   // Adaptive caching: lower a_i (never below aMin).
   void shrinkA(uint32_t id, float newA, float aMin);
+  // Records lookups pass over (skipped[id] != 0) while they stay in the cache and its file:
+  // loaded records too coarse for this view (cache/view_refinement.h). Records inserted later
+  // are never skipped.
+  void setSkipped(std::vector<uint8_t> skipped);
 
   // Snapshot access for batching (copy under the shared lock).
   RecordInfo info(uint32_t id) const;
@@ -109,6 +113,7 @@ class RadianceCache {
   bool hasWorld_ = false;
   RecordOctree octree_;
   float maxReach_ = 0.0f;  // largest a_i·R_i ever inserted (bounds relaxed queries)
+  std::vector<uint8_t> skipped_;  // setSkipped's mask (shorter than infos_ or empty)
   void lookupLocked(const Vec3& p, const Vec3& n, Lookup& out, bool brute, float scale = 1.0f) const;
   Color cosineIrradianceLocked(const Lookup& lk, const Vec3& n, bool gradients) const;
 };

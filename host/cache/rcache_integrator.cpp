@@ -15,6 +15,7 @@
 #include "cache/primary_hits.h"
 #include "cache/rcache_run.h"
 #include "cache/rcache_stats.h"
+#include "cache/view_refinement.h"
 #include "cl/sh_backend.h"
 #include "core/error.h"
 #include "core/rng.h"
@@ -105,6 +106,8 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
 
   const size_t recordsLoaded = ctx.options.cacheLoad.empty() ? 0
       : loadCachesInto(engine, ctx.options.cacheLoad, sceneHash, params_.worldFrame, backend);
+  // Loaded records too coarse for this view are passed over (cache/view_refinement.h).
+  const size_t recordsSkipped = recordsLoaded > 0 ? skipCoarseRecords(engine, params_) : 0;
   // --cache-reuse (walk-throughs, distributed fills): the loaded records stay as they are and the
   // fill adds records only where this view finds none.
   const bool fillNeeded = ctx.options.cacheLoad.empty() || ctx.options.cacheReuse;
@@ -135,6 +138,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
                     stats);
   stats.setText("fallback", fallback.reason);
   if (fallback.pilotPoints > 0) stats.set("pilot_served_share", fallback.servedShare);
+  if (recordsLoaded > 0) stats.set("records_too_coarse", double(recordsSkipped));
   return img;
 }
 
