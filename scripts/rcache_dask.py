@@ -3,6 +3,7 @@
 
     rcache_dask.py still SCENE.xml -o out.exr [--tiles 2x2] [--scheduler tcp://host:8786 | --local N]
     rcache_dask.py walk  SCENE.xml -o out.exr --frames N --camera-path keys.json [...]
+    rcache_dask.py still SCENE.xml -o out.exr --cluster slurm|pbs --jobs N [--queue Q] [--job-memory 4GB]
     (after `--`: more rcache arguments, e.g. -- --spp 64 --integrator path)
 
 Pipeline (rcache integrator): a distributed fill (every task fills the cache for its tile or its
@@ -13,7 +14,8 @@ the default yet: the 48² seam test flagged one border column at 4.2 sigma with 
 sigma at 96²), which needs more seeds to call), `rcache cache merge` of the parts (de-duplicated,
 radii clamped across parts, the same file whatever the order), then the final pass of every tile
 or frame with the merged cache loaded, and (stills) the tiles assembled into one EXR. Other
-integrators (path) skip fill and merge.
+integrators (path) skip fill and merge, and so does a still whose pilot decides, as in one process,
+that caching cannot pay (render_plan): its tiles are path traced.
 
 Tiles are crop windows (hdrfilm crop_offset/crop_width semantics, `rcache --crop`) grown by the
 reconstruction filter's reach, ceil(4 stddev) + 1 pixels for a Gaussian, ceil(radius) + 1 for a tent: the assembled image takes
@@ -27,13 +29,13 @@ cluster's workers already share a file system (NFS/Lustre) — sending a scene's
 through the scheduler would copy gigabytes per task. Every task writes its output under a name of
 its own attempt and renames it into place, so a worker killed mid-task (Dask reschedules its task
 on another worker) never leaves half a file. Each attempt also leaves a line in
-workdir/attempts.log (task, pid, start), which the fault test reads.
+workdir/attempts.log (task, pid, start, session id), which the fault and jobqueue tests read.
 
 Dask: Debian 12's python3-distributed (2022.12), installed by scripts/install_deps.sh like every
 other dependency: apt is what the CI machine already uses, needs no PyPI access, and the version is
 fixed with the distribution. The API used (Client, LocalCluster-free scheduler address, submit,
-gather, upload_file) is stable across newer PyPI releases too; Slurm/PBS clusters come through
-dask-jobqueue (`--scheduler` of a jobqueue cluster).
+gather, upload_file) is stable across newer PyPI releases too. Slurm/PBS clusters: `--cluster
+slurm|pbs --jobs N` starts the workers as batch jobs through dask-jobqueue (jobqueue_cluster).
 """
 import argparse
 import math
@@ -111,7 +113,7 @@ def make_tiles(width, height, tiles_x, tiles_y, border):
 
 def _log_attempt(workdir, task):
     with open(os.path.join(workdir, "attempts.log"), "a") as f:
-        f.write("%s %d %.3f\n" % (task, os.getpid(), time.time()))
+        f.write("%s %d %.3f %d\n" % (task, os.getpid(), time.time(), os.getsid(0)))
 
 
 def _run(rcache, args):
@@ -216,8 +218,13 @@ def assemble(tiles, tile_files, width, height, output):
     os.replace(tmp, output)
 
 
-def uses_cache(rcache, scene, extra):
-    """Whether the render is rcache's (fill and merge apply): asks rcache at 1 spp on one pixel."""
+def render_plan(rcache, scene, extra):
+    """How the render runs, decided once for every tile: "cache" (rcache's fill, merge, final pass),
+    "path traced" (rcache's pilot found that caching cannot pay here, so tiles render without a
+    cache, as the single-process render does) or "no cache" (another integrator). Asks rcache on one
+    pixel at 1 spp: its pilot samples the whole sensor, not the crop window, so this is the
+    decision of the full image; each tile's rcache repeats the same pilot (same grid, same seeds)
+    and path-traces too."""
     import json
     import tempfile
     with tempfile.TemporaryDirectory() as d:
@@ -225,7 +232,10 @@ def uses_cache(rcache, scene, extra):
         _run(rcache, [scene, "--quiet", "--spp", "1", "--crop", "0,0,1,1", "-o", os.path.join(d, "p.exr"),
                       "--stats", stats] + extra)
         with open(stats) as f:
-            return json.load(f).get("integrator") == "rcache"
+            s = json.load(f)
+    if s.get("integrator") != "rcache":
+        return "no cache"
+    return "path traced" if str(s.get("fallback", "")).startswith("path traced") else "cache"
 
 
 class _PhaseTimes:
@@ -258,7 +268,8 @@ def render_still(client, rcache, scene, output, workdir, tiles_x, tiles_y, extra
     tiles = make_tiles(width, height, tiles_x, tiles_y, border)
     times = _PhaseTimes()
     cache = None
-    if uses_cache(rcache, scene, extra):
+    plan = render_plan(rcache, scene, extra)
+    if plan == "cache":
         def fill_tile(t, base=None):
             return client.submit(fill_task, rcache, scene, t["crop"], None, workdir, "fill_tile%d" % t["index"], extra,
                                  base, pure=False)
@@ -280,14 +291,16 @@ def render_still(client, rcache, scene, output, workdir, tiles_x, tiles_y, extra
     times.mark("final")
     assemble(tiles, tile_files, width, height, output)
     times.mark("assemble")
-    return {"tiles": len(tiles), "border": border, "cache": cache.result() if cache is not None else None,
-            "times_s": times.seconds}
+    return {"tiles": len(tiles), "border": border, "plan": plan,
+            "cache": cache.result() if cache is not None else None, "times_s": times.seconds}
 
 
 def render_walk(client, rcache, scene, output, workdir, frames, camera_path, chunks, extra):
     times = _PhaseTimes()
     cache = None
-    if uses_cache(rcache, scene, extra):
+    # Walks always cache, as the single-process walk does (its frames share one cache, which it
+    # asks for as a saved cache: the pilot is not consulted then).
+    if render_plan(rcache, scene, extra) != "no cache":
         chunks = max(1, min(chunks, frames))
         # Frame 0's records first, loaded by every chunk: what the chunks' views share is made once
         # (the merge drops the copies as exact duplicates) instead of once per chunk.
@@ -313,6 +326,30 @@ def render_walk(client, rcache, scene, output, workdir, frames, camera_path, chu
     return {"frames": frame_files, "cache": cache.result() if cache is not None else None, "times_s": times.seconds}
 
 
+JOBQUEUE_CLUSTERS = {"slurm": "SLURMCluster", "pbs": "PBSCluster"}
+
+
+def jobqueue_cluster(kind, jobs, memory, walltime, queue=None, host=None):
+    """A Slurm or PBS cluster through dask-jobqueue: the scheduler runs here (the login node), each
+    of `jobs` batch jobs (sbatch/qsub of a job script dask-jobqueue writes) starts one worker with one
+    thread (rcache parallelises itself; one task per job keeps a job's cores for its rcache -t). The
+    workers' Python is this one (sys.executable), so the cluster's nodes need the same path; files
+    go through the shared --workdir as with any cluster. dask-jobqueue is not a Debian 12 package:
+    `pip install dask-jobqueue` (scripts/install_deps.sh puts it in a venv that sees Debian's Dask)."""
+    try:
+        import dask_jobqueue
+    except ImportError:
+        raise RuntimeError("--cluster %s needs dask-jobqueue (pip install dask-jobqueue)" % kind)
+    options = {"cores": 1, "processes": 1, "memory": memory, "walltime": walltime, "python": sys.executable}
+    if queue:
+        options["queue"] = queue
+    if host:
+        options["scheduler_options"] = {"host": host}
+    cluster = getattr(dask_jobqueue, JOBQUEUE_CLUSTERS[kind])(**options)
+    cluster.scale(jobs=jobs)
+    return cluster
+
+
 def parse_args(argv):
     extra = []
     if "--" in argv:
@@ -324,6 +361,13 @@ def parse_args(argv):
     p.add_argument("-o", "--output", required=True)
     p.add_argument("--scheduler", help="address of a running dask scheduler (tcp://host:8786)")
     p.add_argument("--local", type=int, default=0, help="start a local cluster of N worker processes instead")
+    p.add_argument("--cluster", choices=sorted(JOBQUEUE_CLUSTERS),
+                   help="start the workers as batch jobs through dask-jobqueue (see jobqueue_cluster)")
+    p.add_argument("--jobs", type=int, default=2, help="--cluster: batch jobs, one single-threaded worker each")
+    p.add_argument("--job-memory", default="4GB", help="--cluster: memory per job (default 4GB)")
+    p.add_argument("--job-walltime", default="01:00:00", help="--cluster: wall time per job")
+    p.add_argument("--queue", help="--cluster: the batch queue / partition")
+    p.add_argument("--scheduler-host", help="--cluster: address the scheduler listens on (default: all)")
     p.add_argument("--tiles", default="2x2", help="still: tiles across x down (default 2x2)")
     p.add_argument("--fill", choices=["independent", "checkerboard"], default="independent",
                    help="still: how tiles fill the cache (see render_still)")
@@ -350,11 +394,21 @@ def main(argv):
         if tok == "-D" and i + 1 < len(a.extra) and "=" in a.extra[i + 1]:
             k, v = a.extra[i + 1].split("=", 1)
             defines[k] = v
-    cluster = LocalCluster(n_workers=a.local, threads_per_worker=1, processes=True) if a.local else None
+    if sum(bool(x) for x in (a.local, a.cluster, a.scheduler)) > 1:
+        raise SystemExit("rcache_dask: --scheduler, --local and --cluster exclude each other")
+    cluster = None
+    if a.local:
+        cluster = LocalCluster(n_workers=a.local, threads_per_worker=1, processes=True)
+    elif a.cluster:
+        cluster = jobqueue_cluster(a.cluster, a.jobs, a.job_memory, a.job_walltime, a.queue, a.scheduler_host)
     client = Client(cluster if cluster else a.scheduler)
     try:
+        if a.cluster:
+            # Batch jobs start when the queue lets them: wait for the first worker only (tasks wait
+            # for workers anyway; later jobs join the running render).
+            client.wait_for_workers(1)
         client.upload_file(os.path.abspath(__file__))  # remote workers import the task functions
-        workers = max(1, len(client.scheduler_info()["workers"]))
+        workers = a.jobs if a.cluster else max(1, len(client.scheduler_info()["workers"]))
         if a.mode == "still":
             tx, ty = (int(v) for v in a.tiles.lower().split("x"))
             info = render_still(client, rcache, scene, output, workdir, tx, ty, a.extra, defines, a.fill)

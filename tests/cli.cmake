@@ -16,3 +16,6 @@ set_tests_properties(cli_walk PROPERTIES LABELS cli TIMEOUT 120)
 # The Dask driver on a local two-worker cluster: tiled stills, a killed worker, an animation (issue 20).
 add_test(NAME dask_driver COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/dask/dask_driver_test.py $<TARGET_FILE:rcache>)
 set_tests_properties(dask_driver PROPERTIES LABELS dask TIMEOUT 300)
+# --cluster slurm|pbs through dask-jobqueue with fake batch commands; skipped (77) without dask-jobqueue.
+add_test(NAME dask_jobqueue COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/dask/jobqueue_test.py $<TARGET_FILE:rcache>)
+set_tests_properties(dask_jobqueue PROPERTIES LABELS dask TIMEOUT 300 SKIP_RETURN_CODE 77)
