@@ -25,15 +25,18 @@ FallbackDecision decideFallback(const RcacheRun& run) {
     d.reason = "not considered";
     return d;
   }
-  const int W = run.width, H = run.height;
+  // The grid covers the whole sensor, not the crop window: a tile (rcache --crop, the Dask
+  // driver) then makes the decision the full image makes.
+  const FilmSettings& film = run.ctx.scene.film;
+  const int W = film.width, H = film.height;
   const int stride = std::max(1, static_cast<int>(std::sqrt(double(W) * H / kPilotPoints)));
   std::vector<Vec2> filmPos;
   std::vector<int> pixel;
   std::vector<uint64_t> seeds;
   for (int y = stride / 2; y < H; y += stride)
     for (int x = stride / 2; x < W; x += stride) {
-      filmPos.emplace_back(x + 0.5f, y + 0.5f);
-      pixel.push_back(y * W + x);
+      filmPos.emplace_back(float(x - film.cropX) + 0.5f, float(y - film.cropY) + 0.5f);
+      pixel.push_back(-1);  // outside the image where it is cropped; the pilot makes no AOV
       seeds.push_back(hashMix(run.seed, static_cast<uint64_t>(y) * W + x, kSaltPilot));
     }
   std::vector<Primary> prim;

@@ -34,6 +34,14 @@ expect_error crop_flag_outside "--crop: window 10,10 + 8x8 exceeds the film of 1
 expect_error crop_flag_malformed "--crop: expected X,Y,W,H" "$RC" "$DATA/tiny.xml" --crop 1,2,3 -o "$TMP/x.exr"
 expect_error crop_flag_zero "--crop: 0 is out of range" "$RC" "$DATA/tiny.xml" --crop 1,2,0,3 -o "$TMP/x.exr"
 
+# The pilot samples the whole sensor: a crop window (a tile) makes the full image's fallback decision.
+"$RC" "$DATA/tiny.xml" --quiet -t 2 -D res=32 --spp 1 -o "$TMP/pilot_full.exr" --stats "$TMP/pilot_full.json" || fail pilot_full "exit $?"
+"$RC" "$DATA/tiny.xml" --quiet -t 2 -D res=32 --spp 1 --crop 0,0,1,1 -o "$TMP/pilot_crop.exr" --stats "$TMP/pilot_crop.json" \
+  || fail pilot_crop "exit $?"
+pilotFull=$(grep -o '"fallback": "[^"]*"' "$TMP/pilot_full.json"); pilotCrop=$(grep -o '"fallback": "[^"]*"' "$TMP/pilot_crop.json")
+[ -n "$pilotFull" ] && [ "$pilotFull" = "$pilotCrop" ] && pass crop_makes_the_full_images_fallback_decision \
+  || fail crop_makes_the_full_images_fallback_decision "full: $pilotFull; crop: $pilotCrop"
+
 # Walk-through: three frames, the shared cache grows (frame 0 adds every record, later frames
 # reuse them and add fewer than frame 0 made).
 "$RC" "$DATA/tiny.xml" --quiet -t 2 -D rays=32 --frames 3 --camera-path "$DATA/tiny_path.json" \

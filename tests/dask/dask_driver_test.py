@@ -10,9 +10,13 @@ processes on 127.0.0.1, started here and stopped after. Checks:
   3. a worker killed (SIGKILL) while it runs a task: Dask redoes the task on the other worker and
      the image is complete and equal to the single-process render;
   4. an animation: frames rendered across the workers (distributed fill over frame chunks, merge,
-     final pass per frame) match the single-process walk-through within noise.
+     final pass per frame) match the single-process walk-through within noise;
+  5. a still where caching cannot pay (mirror sphere on a sharp floor: the pilot path-traces the
+     single-process render): the driver makes the same decision, fills no cache, and its tiles equal
+     the single-process render bit for bit.
 Usage: dask_driver_test.py path/to/rcache   (CTest, label "dask")
 """
+import json
 import os
 import shutil
 import signal
@@ -225,6 +229,28 @@ def main():
             worst = max(worst, float(np.mean((a - b) ** 2 / (b ** 2 + 1e-2))))
         check("distributed_walk_matches_single_process", worst < 2e-3 and info["cache"] is not None,
               "worst relMSE %.4g, %s" % (worst, info))
+
+        # 5. The pilot's fallback decision holds in the distributed mode too.
+        scene = os.path.join(tmp, "tiny_mirror.xml")
+        with open(os.path.join(DATA, "tiny.xml")) as f:
+            xml = f.read().replace('<bsdf type="diffuse" id="red"><rgb name="reflectance" value="0.7, 0.1, 0.1"/></bsdf>',
+                                   '<bsdf type="conductor" id="red"/>')
+        with open(scene, "w") as f:
+            f.write(xml)
+        fb_args = ["--seed", "5", "-t", "1", "-D", "res=32", "-D", "spp=8"]
+        stats = os.path.join(tmp, "single_fb.json")
+        rcache(scene, "--quiet", "-o", os.path.join(tmp, "single_fb.exr"), "--stats", stats, *fb_args)
+        with open(stats) as f:
+            decision = json.load(f).get("fallback", "")
+        check("mirror_scene_is_path_traced_in_one_process", decision.startswith("path traced"), decision)
+        work = os.path.join(tmp, "w5")
+        os.makedirs(work)
+        info = rcache_dask.render_still(client, RC, scene, os.path.join(tmp, "tiled_fb.exr"), work, 2, 2, fb_args,
+                                        {"res": "32"})
+        check("driver_follows_the_pilots_fallback", info["plan"] == "path traced" and info["cache"] is None, str(info))
+        a, b = read(os.path.join(tmp, "tiled_fb.exr")), read(os.path.join(tmp, "single_fb.exr"))
+        check("path_traced_tiles_equal_single_process_bit_for_bit", a.shape == b.shape and np.array_equal(a, b),
+              "max diff %s" % (np.abs(a - b).max() if a.shape == b.shape else a.shape))
     finally:
         if cluster:
             cluster.close()
