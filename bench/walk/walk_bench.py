@@ -8,7 +8,8 @@ then: time per frame, and temporal flicker over the still frames (per-pixel stan
 across frames relative to the per-pixel mean, averaged over pixels) and error against a high-spp
 path-traced reference of the still view. Writes walk_results.json, a PNG strip and (with
 --plot, through the bench venv's matplotlib) a plot.
-Usage: bench/walk/walk_bench.py [--res 96] [--frames 24] [--rcache build/rcache]
+Usage: bench/walk/walk_bench.py [--res 96] [--frames 24] [--rcache build/rcache] [--camera-path keys.json]
+       [--results walk_results.json] [--strip docs/img/walk_strip.png]
 """
 import argparse
 import json
@@ -55,10 +56,14 @@ def main():
     p.add_argument("--rcache", default=os.path.join(ROOT, "build", "rcache"))
     p.add_argument("--out", default=os.path.join(HERE, "out"))
     p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--camera-path", default=os.path.join(HERE, "cornell_path.json"),
+                   help="keyframes (cornell_dolly_in.json: a dolly 3x closer, where records get refined)")
+    p.add_argument("--results", default=os.path.join(HERE, "walk_results.json"))
+    p.add_argument("--strip", default=os.path.join(ROOT, "docs", "img", "walk_strip.png"))
     a = p.parse_args()
     os.makedirs(a.out, exist_ok=True)
     scene = os.path.join(ROOT, "scenes", "cornell_glossy.xml")
-    keys = os.path.join(HERE, "cornell_path.json")
+    keys = os.path.abspath(a.camera_path)
     base = [a.rcache, scene, "--quiet", "-t", str(a.threads), "-D", "res=%d" % a.res, "--frames", str(a.frames),
             "--camera-path", keys]
     res = {"res": a.res, "frames": a.frames, "still_from": a.still_from}
@@ -78,7 +83,8 @@ def main():
     res["shared"] = {"wall_s": [shared_wall, shared_wall2], "time_per_frame_s": per_frame(shared),
                      "fill_s": [f["time_cache_fill_s"] for f in shared["frames_list"]],
                      "reused": [f["records_reused"] for f in shared["frames_list"]],
-                     "added": [f["records_added"] for f in shared["frames_list"]]}
+                     "added": [f["records_added"] for f in shared["frames_list"]],
+                     "too_coarse": [f.get("records_too_coarse", 0) for f in shared["frames_list"]]}
     res["fresh"] = {"wall_s": fresh_wall, "time_per_frame_s": per_frame(fresh),
                     "fill_s": [f["time_cache_fill_s"] for f in fresh["frames_list"]],
                     "added": [f["records_added"] for f in fresh["frames_list"]]}
@@ -100,15 +106,15 @@ def main():
         fr = frames_of(os.path.join(a.out, name), a.frames)[a.still_from:]
         res[name]["flicker"] = flicker(fr)
         res[name]["relmse_still"] = float(np.mean([relmse(f, ref) for f in fr]))
-    with open(os.path.join(HERE, "walk_results.json"), "w") as f:
+    with open(a.results, "w") as f:
         json.dump(res, f, indent=1)
     # A strip of every fourth frame of the shared-cache walk, tone-mapped (sRGB, clamp).
     import OpenImageIO as oiio
     strip = np.concatenate([frames_of(os.path.join(a.out, "shared"), a.frames)[f] for f in range(0, a.frames, 4)], axis=1)
     srgb = np.where(strip <= 0.0031308, 12.92 * strip, 1.055 * np.power(np.clip(strip, 0, None), 1 / 2.4) - 0.055)
     png = np.clip(srgb * 255 + 0.5, 0, 255).astype(np.uint8)
-    out = oiio.ImageOutput.create(os.path.join(ROOT, "docs", "img", "walk_strip.png"))
-    out.open(os.path.join(ROOT, "docs", "img", "walk_strip.png"), oiio.ImageSpec(png.shape[1], png.shape[0], 3, oiio.UINT8))
+    out = oiio.ImageOutput.create(a.strip)
+    out.open(a.strip, oiio.ImageSpec(png.shape[1], png.shape[0], 3, oiio.UINT8))
     out.write_image(png)
     out.close()
     print(json.dumps({k: (v if not isinstance(v, dict) else {kk: vv for kk, vv in v.items() if not isinstance(vv, list)})

@@ -82,6 +82,35 @@ TEST(NeighbourClamping, AppliedOnInsert) {
   EXPECT_FLOAT_EQ(cache.info(2).R, 5.0f);
 }
 
+TEST(SkippedRecords, LookupsPassOverThemAndLaterRecordsCount) {
+  RadianceCache cache(1, Vec3(-1), Vec3(1));
+  const std::vector<float> z(3, 0.0f), none;
+  RecordInfo coarse;
+  coarse.p = Vec3(0.0f);
+  coarse.R = 1.0f;
+  coarse.a = 0.5f;
+  cache.insert({coarse}, z, z, z, none, none, none);
+  Lookup lk;
+  cache.lookup(Vec3(0.1f, 0, 0), Vec3(0, 0, 1), lk);
+  ASSERT_TRUE(lk.covered());
+  cache.setSkipped({1});
+  cache.lookup(Vec3(0.1f, 0, 0), Vec3(0, 0, 1), lk);
+  EXPECT_FALSE(lk.covered());
+  cache.lookupBruteForce(Vec3(0.1f, 0, 0), Vec3(0, 0, 1), lk);
+  EXPECT_FALSE(lk.covered());
+  cache.lookup(Vec3(0.1f, 0, 0), Vec3(0, 0, 1), lk, 3.0f);  // relaxed lookups skip it too
+  EXPECT_FALSE(lk.covered());
+  // A finer record inserted after the mask was set is looked up; the skipped one stays stored.
+  RecordInfo fine = coarse;
+  fine.p = Vec3(0.1f, 0, 0);
+  fine.R = 0.1f;
+  cache.insert({fine}, z, z, z, none, none, none);
+  cache.lookup(Vec3(0.1f, 0, 0), Vec3(0, 0, 1), lk);
+  ASSERT_EQ(lk.entries.size(), 1u);
+  EXPECT_EQ(lk.entries[0].record, 1);
+  EXPECT_EQ(cache.size(), 2u);
+}
+
 TEST(RecordOctree, EqualsBruteForceOnRandomRecords) {
   Rng rng(7);
   RadianceCache cache(1, Vec3(0.0f), Vec3(1.0f));
