@@ -83,12 +83,9 @@ TEST(NeighbourClamping, AppliedOnInsert) {
 }
 
 TEST(SkippedRecords, LookupsPassOverThemAndLaterRecordsCount) {
-  RadianceCache cache(1, Vec3(-1), Vec3(1));
   const std::vector<float> z(3, 0.0f), none;
-  RecordInfo coarse;
-  coarse.p = Vec3(0.0f);
-  coarse.R = 1.0f;
-  coarse.a = 0.5f;
+  const RecordInfo coarse{Vec3(0.0f), Frame(), 1.0f, 0.5f};  // influence radius 0.5, normal +z
+  RadianceCache cache(1, Vec3(-1), Vec3(1));
   cache.insert({coarse}, z, z, z, none, none, none);
   Lookup lk;
   cache.lookup(Vec3(0.1f, 0, 0), Vec3(0, 0, 1), lk);
@@ -101,9 +98,7 @@ TEST(SkippedRecords, LookupsPassOverThemAndLaterRecordsCount) {
   cache.lookup(Vec3(0.1f, 0, 0), Vec3(0, 0, 1), lk, 3.0f);  // relaxed lookups skip it too
   EXPECT_FALSE(lk.covered());
   // A finer record inserted after the mask was set is looked up; the skipped one stays stored.
-  RecordInfo fine = coarse;
-  fine.p = Vec3(0.1f, 0, 0);
-  fine.R = 0.1f;
+  const RecordInfo fine{Vec3(0.1f, 0, 0), Frame(), 0.1f, 0.5f};
   cache.insert({fine}, z, z, z, none, none, none);
   cache.lookup(Vec3(0.1f, 0, 0), Vec3(0, 0, 1), lk);
   ASSERT_EQ(lk.entries.size(), 1u);

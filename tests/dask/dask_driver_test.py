@@ -28,20 +28,8 @@ import time
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-import rcache_dask  # noqa: E402
-
-RC = os.path.abspath(sys.argv[1])
-DATA = os.path.join(ROOT, "tests", "cli", "data")
-failures = []
-
-
-def check(name, ok, detail=""):
-    print(("PASS " if ok else "FAIL ") + name + (" (" + detail + ")" if detail else ""), flush=True)
-    if not ok:
-        failures.append(name)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from dask_test_common import DATA, RC, ROOT, check, rcache_dask, summary  # noqa: E402
 
 
 def read(path):
@@ -255,8 +243,7 @@ def main():
         if cluster:
             cluster.close()
         shutil.rmtree(tmp, ignore_errors=True)
-    print("%d failure(s)" % len(failures))
-    return 1 if failures else 0
+    return summary()
 
 
 if __name__ == "__main__":

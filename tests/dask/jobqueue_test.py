@@ -23,23 +23,12 @@ import time
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-import rcache_dask  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from dask_test_common import DATA, HERE, RC, ROOT, check, rcache_dask, summary  # noqa: E402
 
-RC = os.path.abspath(sys.argv[1])
-DATA = os.path.join(ROOT, "tests", "cli", "data")
 VENV = os.environ.get("RCACHE_DASK_VENV",
                       os.path.join(os.environ.get("XDG_CACHE_HOME", os.path.expanduser("~/.cache")), "rcache", "dask-venv"))
 PYTHON = os.path.join(VENV, "bin", "python")
-failures = []
-
-
-def check(name, ok, detail=""):
-    print(("PASS " if ok else "FAIL ") + name + (" (" + detail + ")" if detail else ""), flush=True)
-    if not ok:
-        failures.append(name)
 
 
 def job_sessions(batch_dir):
@@ -118,8 +107,7 @@ def main():
         run_kind("pbs", "#PBS", tmp, single)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
-    print("%d failure(s)" % len(failures))
-    return 1 if failures else 0
+    return summary()
 
 
 if __name__ == "__main__":
