@@ -335,7 +335,7 @@ def jobqueue_cluster(kind, jobs, memory, walltime, queue=None, host=None):
     thread (rcache parallelises itself; one task per job keeps a job's cores for its rcache -t). The
     workers' Python is this one (sys.executable), so the cluster's nodes need the same path; files
     go through the shared --workdir as with any cluster. dask-jobqueue is not a Debian 12 package:
-    `pip install dask-jobqueue` (scripts/install_deps.sh puts it in a venv that sees Debian's Dask)."""
+    `pip install dask-jobqueue` (scripts/install_dask_jobqueue.sh puts it in a venv over Debian's Dask)."""
     try:
         import dask_jobqueue
     except ImportError:

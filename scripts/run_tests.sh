@@ -4,6 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install_deps.sh
+scripts/install_dask_jobqueue.sh
 scripts/build.sh
 export RC_REQUIRE_OPENCL=1
 ctest --test-dir build --output-on-failure -j"$(nproc)" --timeout 600

@@ -8,8 +8,8 @@ Slurm and for PBS, checks:
   2. the tiled still (path tracer, box filter, 2x1 tiles) equals the single-process render bit for bit;
   3. the tasks ran in the jobs' workers (attempts.log's session ids are the jobs'), and after the
      driver exits no job is left running (dask-jobqueue cancelled them through scancel / qdel).
-dask-jobqueue is not packaged by Debian 12: scripts/install_deps.sh pip-installs it into a venv that
-sees Debian's Dask ($RCACHE_DASK_VENV, default ~/.cache/rcache/dask-venv). Without it the test is
+dask-jobqueue is not packaged by Debian 12: scripts/install_dask_jobqueue.sh pip-installs it into a venv
+that sees Debian's Dask ($RCACHE_DASK_VENV, default ~/.cache/rcache/dask-venv). Without it the test is
 skipped (exit 77) and says so.
 Usage: jobqueue_test.py path/to/rcache   (CTest, label "dask")
 """
@@ -97,7 +97,7 @@ ARGS = ["--integrator", "path", "--seed", "5", "-t", "1", "-D", "res=16", "-D", 
 def main():
     probe = subprocess.run([PYTHON, "-c", "import dask_jobqueue"], stderr=subprocess.DEVNULL) if os.path.exists(PYTHON) else None
     if probe is None or probe.returncode != 0:
-        print("SKIP: no dask-jobqueue in %s (scripts/install_deps.sh installs it with pip)" % VENV)
+        print("SKIP: no dask-jobqueue in %s (scripts/install_dask_jobqueue.sh installs it with pip)" % VENV)
         return 77
     tmp = tempfile.mkdtemp(prefix="rc_jobqueue_")
     try:
