@@ -3,10 +3,10 @@
 // camera path (render/camera_path.h) into NAME_0000.exr, NAME_0001.exr, ... with a progress bar
 // over the frames. With rcache, frames share one cache: frame i loads the records of frames < i
 // and its fill adds records only where none serves the new view (--cache-reuse semantics; records
-// keep the radius clamps of the view that made them, see docs in cache_fill.h), then saves the
+// keep the radius clamps of the view that made them, see below), then saves the
 // grown cache for frame i+1. --fresh-frames renders every frame from an empty cache instead (for
 // comparison). Frame f renders with seed --seed + f. Per frame: time, fill time, records reused
-// (loaded) and added.
+// (loaded), added and too coarse (passed over).
 // Radius clamps and reuse: a record's radius is clamped to [r_min, r_max] footprints of a *sensor*
 // pixel (render/camera.h: the same with or without a crop window, so tiles and frames of one view
 // agree) at its distance from the camera of the frame that made it, and it keeps that radius when
@@ -14,8 +14,9 @@
 // the cache file), not of the view looking at it, so every frame interpolates the same record the
 // same way and the cache does not flicker. A later frame adds records where the reused ones do
 // not pass the weight test at its points (newly visible surfaces, and where neighbour clamping of
-// its new records shrank old radii); it does not replace a reused record that a closer camera
-// would have made smaller (see issue 20's notes in the report).
+// its new records shrank old radii), and where a reused record is too coarse for it: a camera
+// about twice as close as the record's maker passes over the record and makes finer ones, while
+// the record stays for the farther frames (cache/view_refinement.h).
 #include <atomic>
 #include <string>
 

@@ -1,7 +1,8 @@
 #pragma once
 // Phase 0 of an rcache render (docs/ARCHITECTURE.md §Pipeline): whether caching can pay at all,
 // measured before any record is made. A pilot traces the camera rays of a sparse grid of pixel
-// centres (about kPilotPoints) and one BSDF continuation below each point rendered by importance
+// centres (about kPilotPoints, over the whole sensor even when a crop window is rendered, so a tile
+// decides as the full image does) and one BSDF continuation below each point rendered by importance
 // sampling; a point counts as served by the cache when its own material is cached, or when its
 // continuation lands on a cached material (its reflected light then comes from records). The
 // cache only lowers the noise of that share s of the image, at a fill cost and a per-sample
