@@ -14,8 +14,8 @@ the default yet: the 48² seam test flagged one border column at 4.2 sigma with 
 sigma at 96²), which needs more seeds to call), `rcache cache merge` of the parts (de-duplicated,
 radii clamped across parts, the same file whatever the order), then the final pass of every tile
 or frame with the merged cache loaded, and (stills) the tiles assembled into one EXR. Other
-integrators (path) skip fill and merge, and so does a still whose pilot decides, as in one process,
-that caching cannot pay (render_plan): its tiles are path traced.
+integrators (path) skip fill and merge, and so does a still or walk whose pilot decides, as in one
+process, that caching cannot pay (render_plan): its tiles or frames are path traced.
 
 Tiles are crop windows (hdrfilm crop_offset/crop_width semantics, `rcache --crop`) grown by the
 reconstruction filter's reach, ceil(4 stddev) + 1 pixels for a Gaussian, ceil(radius) + 1 for a tent: the assembled image takes
@@ -218,23 +218,28 @@ def assemble(tiles, tile_files, width, height, output):
     os.replace(tmp, output)
 
 
-def render_plan(rcache, scene, extra):
-    """How the render runs, decided once for every tile: "cache" (rcache's fill, merge, final pass),
-    "path traced" (rcache's pilot found that caching cannot pay here, so tiles render without a
-    cache, as the single-process render does) or "no cache" (another integrator). Asks rcache on one
-    pixel at 1 spp: its pilot samples the whole sensor, not the crop window, so this is the
+def render_plan(rcache, scene, extra, walk=None):
+    """How the render runs, decided once for every tile or frame: "cache" (rcache's fill, merge,
+    final pass), "path traced" (rcache's pilot found that caching cannot pay here, so tiles or frames
+    render without a cache, as in one process) or "no cache" (another integrator). Asks rcache on
+    one pixel at 1 spp: its pilot samples the whole sensor, not the crop window, so this is the
     decision of the full image; each tile's rcache repeats the same pilot (same grid, same seeds)
-    and path-traces too."""
+    and path-traces too. walk = (frames, camera path): the decision of the walk's first frame,
+    which a single-process walk makes the same way (frames then render on their own)."""
     import json
     import tempfile
     with tempfile.TemporaryDirectory() as d:
         stats = os.path.join(d, "s.json")
-        _run(rcache, [scene, "--quiet", "--spp", "1", "--crop", "0,0,1,1", "-o", os.path.join(d, "p.exr"),
-                      "--stats", stats] + extra)
+        args = [scene, "--quiet", "--spp", "1", "--crop", "0,0,1,1", "-o", os.path.join(d, "p.exr"), "--stats", stats]
+        if walk:
+            args += ["--frames", str(walk[0]), "--camera-path", walk[1], "--frame-range", "0,1"]
+        _run(rcache, args + extra)
         with open(stats) as f:
             s = json.load(f)
     if s.get("integrator") != "rcache":
         return "no cache"
+    if walk:
+        return "path traced" if str(s.get("cache_across_frames", "")).startswith("none") else "cache"
     return "path traced" if str(s.get("fallback", "")).startswith("path traced") else "cache"
 
 
@@ -298,9 +303,8 @@ def render_still(client, rcache, scene, output, workdir, tiles_x, tiles_y, extra
 def render_walk(client, rcache, scene, output, workdir, frames, camera_path, chunks, extra):
     times = _PhaseTimes()
     cache = None
-    # Walks always cache, as the single-process walk does (its frames share one cache, which it
-    # asks for as a saved cache: the pilot is not consulted then).
-    if render_plan(rcache, scene, extra) != "no cache":
+    plan = render_plan(rcache, scene, extra, (frames, camera_path))
+    if plan == "cache":
         chunks = max(1, min(chunks, frames))
         # Frame 0's records first, loaded by every chunk: what the chunks' views share is made once
         # (the merge drops the copies as exact duplicates) instead of once per chunk.
@@ -323,7 +327,8 @@ def render_walk(client, rcache, scene, output, workdir, frames, camera_path, chu
               for f in range(frames)]
     frame_files = client.gather(finals)
     times.mark("final")
-    return {"frames": frame_files, "cache": cache.result() if cache is not None else None, "times_s": times.seconds}
+    return {"frames": frame_files, "plan": plan, "cache": cache.result() if cache is not None else None,
+            "times_s": times.seconds}
 
 
 JOBQUEUE_CLUSTERS = {"slurm": "SLURMCluster", "pbs": "PBSCluster"}

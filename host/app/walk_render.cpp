@@ -30,6 +30,32 @@ std::string sharedCachePath(const WalkJob& job) {
   return splitExtension(job.output).first + "_walk.rcc";
 }
 
+// Whether the rcache integrator's pilot path-traces frame `frame` (cache/path_fallback.h): asked
+// on a one-pixel crop at 1 spp, since the pilot samples the whole sensor whatever the crop. The
+// shared cache is a cache file the walk saves, which the pilot would not consider, so the walk
+// asks first.
+bool pilotPathTraces(const WalkJob& job, const Camera& camera, int frame) {
+  const FilmSettings film = job.scene.film;
+  job.scene.camera = camera;
+  job.scene.film.cropWidth = job.scene.film.cropHeight = 1;
+  RenderContext ctx = job.ctx;
+  ctx.options.seed += static_cast<uint64_t>(frame);
+  ctx.options.spp = 1;
+  ctx.options.cacheLoad.clear();
+  ctx.options.cacheSave.clear();
+  ctx.options.cacheReuse = false;
+  ctx.progress = nullptr;
+  RenderStats stats;
+  try {
+    job.integrator.render(ctx, stats);
+  } catch (...) {
+    job.scene.film = film;
+    throw;
+  }
+  job.scene.film = film;
+  return stats.text("fallback").rfind("path traced", 0) == 0;
+}
+
 }  // namespace
 
 std::string frameOutputPath(const std::string& output, int frame) {
@@ -43,9 +69,15 @@ RenderStats renderWalk(const WalkJob& job) {
   const RenderArgs& ra = job.args;
   const std::vector<CameraKey> keys = readCameraPath(ra.cameraPath);
   const Camera base = job.scene.camera;
-  const bool shareCache = job.integrator.name() == "rcache" && !ra.freshFrames;
-  const std::string cachePath = shareCache ? sharedCachePath(job) : std::string();
   const auto start = SteadyClock::now();
+  const int first = ra.firstFrame, end = ra.endFrame > 0 ? ra.endFrame : ra.frames;
+  // A walk whose first frame caching cannot pay renders every frame on its own (each deciding as
+  // a still does) instead of forcing a shared cache on it — unless a cache file was asked for.
+  const bool rcache = job.integrator.name() == "rcache" && !ra.freshFrames;
+  const bool pathTraced = rcache && ra.cacheLoad.empty() && ra.cacheSave.empty() && first < end &&
+                          pilotPathTraces(job, cameraOfFrame(base, keys, first, ra.frames), first);
+  const bool shareCache = rcache && !pathTraced;
+  const std::string cachePath = shareCache ? sharedCachePath(job) : std::string();
 
   JsonWriter frames;
   frames.beginArray();
@@ -53,7 +85,6 @@ RenderStats renderWalk(const WalkJob& job) {
   double fillSum = 0.0, reused = 0.0, added = 0.0;
   int rendered = 0;
   bool interrupted = false;
-  const int first = ra.firstFrame, end = ra.endFrame > 0 ? ra.endFrame : ra.frames;
   for (int f = first; f < end && !interrupted; ++f) {
     job.scene.camera = cameraOfFrame(base, keys, f, ra.frames);
     RenderContext ctx = job.ctx;
@@ -94,6 +125,7 @@ RenderStats renderWalk(const WalkJob& job) {
         .field("records_reused", stats.get("records_loaded"))
         .field("records_added", stats.get("records_added"))
         .field("records_too_coarse", stats.get("records_too_coarse"))
+        .field("fallback", stats.text("fallback"))
         .endObject();
     job.bar.update("frames", f + 1, ra.frames);
     if (f == 0) total.setText("integrator", job.integrator.name());
@@ -102,7 +134,7 @@ RenderStats renderWalk(const WalkJob& job) {
   job.bar.finish();
   if (shareCache && ra.cacheSave.empty()) std::remove(cachePath.c_str());
   total.set("frames", rendered);
-  total.setText("cache_across_frames", shareCache ? "shared" : "none");
+  total.setText("cache_across_frames", shareCache ? "shared" : pathTraced ? "none: the first frame's pilot path-traces" : "none");
   total.set("time_frames_s", secondsSince(start));
   total.set("time_per_frame_s", rendered > 0 ? secondsSince(start) / rendered : 0.0);
   total.set("time_cache_fill_s", fillSum);

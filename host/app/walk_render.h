@@ -7,6 +7,9 @@
 // grown cache for frame i+1. --fresh-frames renders every frame from an empty cache instead (for
 // comparison). Frame f renders with seed --seed + f. Per frame: time, fill time, records reused
 // (loaded), added and too coarse (passed over).
+// The pilot (cache/path_fallback.h): the shared cache is a saved cache file, which the pilot does
+// not consider, so the walk asks it for its first frame; where it path-traces, every frame renders
+// on its own (as with --fresh-frames) unless --cache-load or --cache-save asks for a cache.
 // Radius clamps and reuse: a record's radius is clamped to [r_min, r_max] footprints of a *sensor*
 // pixel (render/camera.h: the same with or without a crop window, so tiles and frames of one view
 // agree) at its distance from the camera of the frame that made it, and it keeps that radius when

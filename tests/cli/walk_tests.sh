@@ -43,8 +43,9 @@ pilotFull=$(grep -o '"fallback": "[^"]*"' "$TMP/pilot_full.json"); pilotCrop=$(g
   || fail crop_makes_the_full_images_fallback_decision "full: $pilotFull; crop: $pilotCrop"
 
 # Walk-through: three frames, the shared cache grows (frame 0 adds every record, later frames
-# reuse them and add fewer than frame 0 made).
-"$RC" "$DATA/tiny.xml" --quiet -t 2 -D rays=32 --frames 3 --camera-path "$DATA/tiny_path.json" \
+# reuse them and add fewer than frame 0 made). fallback=false: tiny.xml's sharp floor leaves the
+# cache about a quarter of the image, where the pilot may path-trace the walk (tested below).
+"$RC" "$DATA/tiny.xml" --quiet -t 2 -D rays=32 -D fallback=false --frames 3 --camera-path "$DATA/tiny_path.json" \
   -o "$TMP/walk.exr" --stats "$TMP/walk.json" || fail walk "exit $? $(cat "$TMP/walk.json" 2>/dev/null)"
 if [ -s "$TMP/walk_0000.exr" ] && [ -s "$TMP/walk_0001.exr" ] && [ -s "$TMP/walk_0002.exr" ] && [ ! -e "$TMP/walk_0003.exr" ]; then
   pass walk_writes_numbered_frames
@@ -67,6 +68,18 @@ freshReused=$(grep -o '"records_reused": [0-9.e+]*' "$TMP/fresh.json" | tail -1 
   --frame-range 2,3 -o "$TMP/range.exr" || fail walk_range "exit $?"
 [ ! -e "$TMP/range_0000.exr" ] && cmp -s "$TMP/range_0002.exr" "$TMP/fresh_0002.exr" && pass frame_range_renders_that_frame \
   || fail frame_range_renders_that_frame "$(ls "$TMP")"
+# A walk whose first frame the pilot path-traces (a mirror sphere on a sharp floor) shares no cache:
+# every frame renders on its own, as --fresh-frames does, bit for bit.
+sed 's|<bsdf type="diffuse" id="red"><rgb name="reflectance" value="0.7, 0.1, 0.1"/></bsdf>|<bsdf type="conductor" id="red"/>|' \
+  "$DATA/tiny.xml" > "$TMP/mirror.xml"
+"$RC" "$TMP/mirror.xml" --quiet -t 2 -D res=32 --frames 2 --camera-path "$DATA/tiny_path.json" -o "$TMP/mwalk.exr" \
+  --stats "$TMP/mwalk.json" || fail mirror_walk "exit $?"
+"$RC" "$TMP/mirror.xml" --quiet -t 2 -D res=32 --frames 2 --camera-path "$DATA/tiny_path.json" --fresh-frames \
+  -o "$TMP/mfresh.exr" || fail mirror_walk_fresh "exit $?"
+if grep -q '"cache_across_frames": "none: the first frame.s pilot path-traces"' "$TMP/mwalk.json" \
+  && cmp -s "$TMP/mwalk_0000.exr" "$TMP/mfresh_0000.exr" && cmp -s "$TMP/mwalk_0001.exr" "$TMP/mfresh_0001.exr"; then
+  pass walk_follows_the_pilots_fallback
+else fail walk_follows_the_pilots_fallback "$(grep -o '"cache_across_frames": "[^"]*"' "$TMP/mwalk.json")"; fi
 printf '{"keyframes": [\n  {"origin": [0, 1, 4]}\n]}\n' > "$TMP/bad_path.json"
 expect_error camera_path_error "bad_path.json:2: keyframe needs 'target'" \
   "$RC" "$DATA/tiny.xml" --frames 2 --camera-path "$TMP/bad_path.json" -o "$TMP/x.exr" --quiet

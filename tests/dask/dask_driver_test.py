@@ -11,9 +11,9 @@ processes on 127.0.0.1, started here and stopped after. Checks:
      the image is complete and equal to the single-process render;
   4. an animation: frames rendered across the workers (distributed fill over frame chunks, merge,
      final pass per frame) match the single-process walk-through within noise;
-  5. a still where caching cannot pay (mirror sphere on a sharp floor: the pilot path-traces the
-     single-process render): the driver makes the same decision, fills no cache, and its tiles equal
-     the single-process render bit for bit.
+  5. a still and a walk where caching cannot pay (mirror sphere on a sharp floor: the pilot
+     path-traces the single-process render): the driver makes the same decision, fills no cache, and
+     its tiles / frames equal the single-process render bit for bit.
 Usage: dask_driver_test.py path/to/rcache   (CTest, label "dask")
 """
 import json
@@ -205,7 +205,8 @@ def main():
 
         # 4. Animation across workers vs the single-process walk-through.
         keys = os.path.join(DATA, "tiny_path.json")
-        walk_args = ["--seed", "5", "-t", "1", "-D", "res=24", "-D", "spp=16", "-D", "rays=64"]
+        # fallback=false: as in 2, this compares cache against cache.
+        walk_args = ["--seed", "5", "-t", "1", "-D", "res=24", "-D", "spp=16", "-D", "rays=64", "-D", "fallback=false"]
         rcache(scene, "--quiet", "--frames", "3", "--camera-path", keys, "-o", os.path.join(tmp, "walk.exr"), *walk_args)
         work = os.path.join(tmp, "w4")
         os.makedirs(work)
@@ -239,6 +240,15 @@ def main():
         a, b = read(os.path.join(tmp, "tiled_fb.exr")), read(os.path.join(tmp, "single_fb.exr"))
         check("path_traced_tiles_equal_single_process_bit_for_bit", a.shape == b.shape and np.array_equal(a, b),
               "max diff %s" % (np.abs(a - b).max() if a.shape == b.shape else a.shape))
+        # ... and for a walk: its frames render on their own, as the single-process walk's do.
+        rcache(scene, "--quiet", "--frames", "2", "--camera-path", keys, "-o", os.path.join(tmp, "mwalk.exr"), *fb_args)
+        work = os.path.join(tmp, "w6")
+        os.makedirs(work)
+        info = rcache_dask.render_walk(client, RC, scene, os.path.join(tmp, "dmwalk.exr"), work, 2, keys, 2, fb_args)
+        same = all(np.array_equal(read(os.path.join(tmp, "dmwalk_%04d.exr" % f)), read(os.path.join(tmp, "mwalk_%04d.exr" % f)))
+                   for f in range(2))
+        check("path_traced_walk_equals_single_process_bit_for_bit",
+              info["plan"] == "path traced" and info["cache"] is None and same, str(info))
     finally:
         if cluster:
             cluster.close()
