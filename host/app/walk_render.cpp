@@ -43,7 +43,7 @@ RenderStats renderWalk(const WalkJob& job) {
   const RenderArgs& ra = job.args;
   const std::vector<CameraKey> keys = readCameraPath(ra.cameraPath);
   const Camera base = job.scene.camera;
-  const bool shareCache = job.integrator.name() == "rcache" && !ra.freshFrames;
+  const bool shareCache = job.rcache && !ra.freshFrames;
   const std::string cachePath = shareCache ? sharedCachePath(job) : std::string();
   const auto start = SteadyClock::now();
 
@@ -65,9 +65,8 @@ RenderStats renderWalk(const WalkJob& job) {
       job.bar.update("frames", f + std::min(0.999, work > 0.0 ? done / work : 0.0), n);
     };
     if (shareCache) {
-      ctx.options.cacheLoad = f == first ? ra.cacheLoad : cachePath;
-      ctx.options.cacheReuse = !ctx.options.cacheLoad.empty();
-      ctx.options.cacheSave = cachePath;
+      const std::string load = f == first ? ra.cacheLoad : cachePath;
+      job.rcache->setCacheFiles({cachePath, load, !load.empty()});
     }
     RenderStats stats;
     const auto t0 = SteadyClock::now();

@@ -21,6 +21,7 @@
 
 #include "app/cli_args.h"
 #include "app/progress_bar.h"
+#include "cache/rcache_integrator.h"
 #include "render/integrator.h"
 
 namespace rc {
@@ -31,6 +32,7 @@ struct WalkJob {
   Scene& scene;        // the camera is moved frame by frame; ctx.scene refers to it
   const RenderContext& ctx;
   Integrator& integrator;
+  RcacheIntegrator* rcache;  // the same integrator when it is rcache (its cache files), else null
   ProgressBar& bar;
 };
 

@@ -51,25 +51,17 @@ RcacheParams paramsOf(const IntegratorSettings& s) {
   return readRcacheParams(in);
 }
 
-class RcacheIntegrator : public Integrator {
- public:
-  explicit RcacheIntegrator(const IntegratorSettings& s) : settings_(s), params_(paramsOf(s)) {}
-  std::string name() const override { return "rcache"; }
-  Image render(const RenderContext& ctx, RenderStats& stats) override;
+}  // namespace
 
- private:
-  IntegratorSettings settings_;
-  RcacheParams params_;
-};
+RcacheIntegrator::RcacheIntegrator(const IntegratorSettings& s) : settings_(s), params_(paramsOf(s)) {}
 
 // The phases of docs/ARCHITECTURE.md §Pipeline, each in its own file of host/cache/.
-Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
+Image RcacheIntegrator::render(const RenderContext& ctx, RenderStats& stats) {
   const auto start = SteadyClock::now();
-  const Scene& scene = ctxIn.scene;
-  const RcacheAovs aovs = parseRcacheAovs(ctxIn.options.aovs);
-  std::unique_ptr<ShBackend> ownBackend = ctxIn.backend ? nullptr : makeScalarBackend();
-  ShBackend& backend = ctxIn.backend ? *ctxIn.backend : *ownBackend;
-  const RenderContext ctx{scene, ctxIn.accel, ctxIn.lights, ctxIn.options, &backend, ctxIn.cancel, ctxIn.progress};
+  const Scene& scene = ctx.scene;
+  const RcacheAovs aovs = parseRcacheAovs(ctx.options.aovs);
+  std::unique_ptr<ShBackend> ownBackend = backend_ ? nullptr : makeScalarBackend();
+  ShBackend& backend = backend_ ? *backend_ : *ownBackend;
 
   BrdfTableSet tables;
   buildTables(scene, params_, stats, tables);
@@ -82,9 +74,9 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   const CameraModel camera(scene.camera, scene.film);
   Vec3 lo, hi;
   finiteSceneBounds(scene, lo, hi);
-  CacheEngine engine(ctx, params_, tables, camera, settings_.maxDepth, settings_.rrDepth, lo, hi);
+  CacheEngine engine(ctx, backend, params_, tables, camera, settings_.maxDepth, settings_.rrDepth, lo, hi);
   const PrimaryHits primaries(ctx, engine, camera, settings_.maxDepth, settings_.hideEmitters);
-  const RcacheRun run{ctx, params_, tables, camera, engine, primaries, film.width(), film.height(),
+  const RcacheRun run{ctx, backend, files_, params_, tables, camera, engine, primaries, film.width(), film.height(),
                       spp, scene.samplerSeed + ctx.options.seed, usesLowDiscrepancy(ctx)};
   // Records hold the cached part of the scene's light: a cache saved under another split must not load.
   const LightSplitSummary& split = engine.lightSplit().summary();
@@ -103,11 +95,11 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     return img;
   }
 
-  const size_t recordsLoaded = ctx.options.cacheLoad.empty() ? 0
-      : loadCachesInto(engine, ctx.options.cacheLoad, sceneHash, params_.worldFrame, backend);
+  const size_t recordsLoaded = files_.load.empty() ? 0
+      : loadCachesInto(engine, files_.load, sceneHash, params_.worldFrame, backend);
   // --cache-reuse (walk-throughs, distributed fills): the loaded records stay as they are and the
   // fill adds records only where this view finds none.
-  const bool fillNeeded = ctx.options.cacheLoad.empty() || ctx.options.cacheReuse;
+  const bool fillNeeded = files_.load.empty() || files_.reuse;
   const FillReport fill = fillNeeded ? fillCache(run) : FillReport{};
   bool interrupted = fill.interrupted;
 
@@ -122,10 +114,10 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
 
   Image img = film.develop();
   if (aovs.records) addRecordsAov(engine, img);
-  if (!ctx.options.cacheSave.empty() && !interrupted) {
+  if (!files_.save.empty() && !interrupted) {
     // A failed save (full disk) must not lose the image: the CLI writes it, then reports this.
     try {
-      saveCaches(engine, ctx.options.cacheSave, sceneHash);
+      saveCaches(engine, files_.save, sceneHash);
     } catch (const Error& e) {
       stats.setText("cache_save_error", e.what());
     }
@@ -137,8 +129,6 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
   if (fallback.pilotPoints > 0) stats.set("pilot_served_share", fallback.servedShare);
   return img;
 }
-
-}  // namespace
 
 std::unique_ptr<Integrator> makeRcacheIntegrator(const IntegratorSettings& settings) {
   return std::make_unique<RcacheIntegrator>(settings);

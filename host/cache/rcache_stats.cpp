@@ -73,7 +73,7 @@ void reportRaysAndLookups(const RcacheRun& run, const RcacheReport& r, RenderSta
 }
 
 void reportKernels(const RcacheRun& run, RenderStats& stats) {
-  const ShBackend& backend = *run.ctx.backend;
+  const ShBackend& backend = run.backend;
   const KernelTimes& kt = backend.times();
   stats.set("kernel_project_s", kt.project_s);
   stats.set("kernel_rotate_s", kt.rotate_s);
@@ -117,8 +117,8 @@ std::string skippedWork(const RcacheRun& run) {
   }
   if (!anyGlossy) skipped += "no glossy material: no glossy radiance cache, no glossy BRDF tables; ";
   if (!anyCached) skipped += "no cached material: no BRDF tables, no records; ";
-  if (!run.ctx.options.cacheLoad.empty() && !run.ctx.options.cacheReuse)
-    skipped += "cache fill passes (cache loaded from " + run.ctx.options.cacheLoad + "); ";
+  if (!run.files.load.empty() && !run.files.reuse)
+    skipped += "cache fill passes (cache loaded from " + run.files.load + "); ";
   return skipped.empty() ? "nothing" : skipped;
 }
 

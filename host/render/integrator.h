@@ -15,7 +15,6 @@
 namespace rc {
 
 class LightSampler;  // render/light_sampler.h
-class ShBackend;     // cl/sh_backend.h
 
 struct RenderOptions {
   int spp = 0;               // 0 = scene's sample_count
@@ -23,9 +22,6 @@ struct RenderOptions {
   std::string sampler;       // "" = the scene's <sampler>; else independent | ldsampler
   AdaptiveSettings adaptive; // --adaptive T, --max-spp N (off by default)
   std::vector<std::string> aovs;  // requested AOV names (integrator-specific)
-  std::string cacheSave;          // rcache: write the view-independent cache here after rendering
-  std::string cacheLoad;          // rcache: start from this cache file
-  bool cacheReuse = false;        // rcache: with cacheLoad, still fill (adds records where none serve)
 };
 
 // Named statistics, printed in insertion order and written to --stats JSON.
@@ -53,7 +49,6 @@ struct RenderContext {
   const Accel& accel;
   const LightSampler& lights;
   RenderOptions options;
-  ShBackend* backend = nullptr;  // batched SH math (rcache integrator); null for path
   std::atomic<bool>* cancel = nullptr;  // set by SIGINT: stop early, keep what is done
   // Progress reporting: called with (phase name, done, total); the CLI draws the bar.
   std::function<void(const std::string&, double, double)> progress;
