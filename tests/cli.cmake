@@ -16,3 +16,6 @@ set_tests_properties(cli_walk PROPERTIES LABELS cli TIMEOUT 120)
 # The Dask driver on a local two-worker cluster: tiled stills, a killed worker, an animation (issue 20).
 add_test(NAME dask_driver COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/dask/dask_driver_test.py $<TARGET_FILE:rcache>)
 set_tests_properties(dask_driver PROPERTIES LABELS dask TIMEOUT 300)
+# --time SECONDS (render/progressive.h): the budget honoured, whole passes, passes = a render of their spp.
+add_test(NAME cli_progressive COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/progressive_tests.sh $<TARGET_FILE:rcache>)
+set_tests_properties(cli_progressive PROPERTIES LABELS cli TIMEOUT 180)

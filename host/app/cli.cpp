@@ -27,6 +27,7 @@
 #include "geometry/accel.h"
 #include "render/image_io.h"
 #include "render/light_sampler.h"
+#include "render/progressive.h"
 #include "scene/param_reader.h"
 #include "scene/scene_loader.h"
 
@@ -224,7 +225,8 @@ int runRender(const std::vector<std::string>& args) {
     return gCancel ? 128 + gSignal.load() : 0;
   }
   const auto tRender = SteadyClock::now();
-  Image image = integrator->render(ctx, stats);
+  Image image = ra.timeBudget > 0.0 ? renderProgressive(*integrator, ctx, {ra.timeBudget}, stats)
+                                    : integrator->render(ctx, stats);
   t.render = secondsSince(tRender);
   bar.finish();
 

@@ -73,7 +73,7 @@ class RcacheIntegrator : public Integrator {
   // value (the registry, app/integrator_registry.h, adds the location and reports unused ones).
   explicit RcacheIntegrator(const IntegratorSettings& settings);
   std::string name() const override { return "rcache"; }
-  Image render(const RenderContext& ctx, RenderStats& stats) override;
+  std::unique_ptr<PassRender> beginPasses(const RenderContext& ctx, RenderStats& stats) override;
 
   // Batched SH math for the records (owned by the caller, outliving the renders); null: the scalar
   // references, made per render.
