@@ -73,7 +73,7 @@ class RcachePasses final : public PassRender {
                ShBackend* backend, const CacheFiles& files, RenderStats& stats);
   int passSpp() const override { return spp_; }
   bool addPass(Film& film, int firstSample) override;
-  Image finish(const Film& film, int passes, RenderStats& stats) override;
+  Image finish(const Film& film, int passes, bool stopped, RenderStats& stats) override;
 
  private:
   const RenderContext& ctx_;
@@ -96,7 +96,6 @@ class RcachePasses final : public PassRender {
   std::unique_ptr<PassRender> pathPasses_;
   size_t recordsLoaded_ = 0;
   FillReport fill_;
-  bool interrupted_ = false;
   FinalPassTotals totals_;
   double finalS_ = 0.0;
 };
@@ -135,34 +134,36 @@ RcachePasses::RcachePasses(const RenderContext& ctx, const IntegratorSettings& s
   // --cache-reuse (walk-throughs, distributed fills): the loaded records stay as they are and the
   // fill adds records only where this view finds none.
   if (files_.load.empty() || files_.reuse) fill_ = fillCache(*run_);
-  interrupted_ = fill_.interrupted;
 }
 
 bool RcachePasses::addPass(Film& film, int firstSample) {
   if (pathPasses_) return pathPasses_->addPass(film, firstSample);
-  if (interrupted_) return false;
+  if (fill_.interrupted) return false;
   const auto passStart = SteadyClock::now();
+  bool interrupted = false;
   AdaptivePixels adaptive(run_->width, run_->height, spp_, ctx_.options.adaptive, firstSample);
   FinalPass pass(*run_, aovs_, film, adaptive);
-  pass.shadeBands(interrupted_);
-  const std::unique_ptr<Film> adaptiveFilm = runAdaptiveRounds(*run_, pass, adaptive, film, interrupted_);
+  pass.shadeBands(interrupted);
+  const std::unique_ptr<Film> adaptiveFilm = runAdaptiveRounds(*run_, pass, adaptive, film, interrupted);
   pass.mergeBands();
   if (adaptiveFilm) film.add(*adaptiveFilm);
   totals_.add(pass, adaptive);
   finalS_ += secondsSince(passStart);
-  return !interrupted_;
+  return !interrupted;
 }
 
-Image RcachePasses::finish(const Film& film, int passes, RenderStats& stats) {
+Image RcachePasses::finish(const Film& film, int passes, bool stopped, RenderStats& stats) {
   if (pathPasses_) {
-    Image img = pathPasses_->finish(film, passes, stats);
+    Image img = pathPasses_->finish(film, passes, stopped, stats);
     stats.setText("fallback", fallback_.reason);
     stats.set("pilot_served_share", fallback_.servedShare);
     return img;
   }
   Image img = film.develop();
   if (aovs_.records) addRecordsAov(*engine_, img);
-  if (!files_.save.empty() && !interrupted_) {
+  // A stopped render's caches lack what its unfinished phases would have added.
+  stopped |= fill_.interrupted;
+  if (!files_.save.empty() && !stopped) {
     // A failed save (full disk) must not lose the image: the CLI writes it, then reports this.
     try {
       saveCaches(*engine_, files_.save, cacheKeyOf(ctx_.scene, settings_, params_, *engine_));
@@ -170,7 +171,7 @@ Image RcachePasses::finish(const Film& film, int passes, RenderStats& stats) {
       stats.setText("cache_save_error", e.what());
     }
   }
-  reportRcacheStats(*run_, {secondsSince(start_), tablesS_, finalS_, fill_, totals_, recordsLoaded_, interrupted_},
+  reportRcacheStats(*run_, {secondsSince(start_), tablesS_, finalS_, fill_, totals_, recordsLoaded_, stopped},
                     stats);
   stats.setText("fallback", fallback_.reason);
   if (fallback_.pilotPoints > 0) stats.set("pilot_served_share", fallback_.servedShare);

@@ -8,8 +8,8 @@ namespace rc {
 Image Integrator::render(const RenderContext& ctx, RenderStats& stats) {
   const std::unique_ptr<PassRender> passes = beginPasses(ctx, stats);
   Film film(ctx.scene.film);
-  passes->addPass(film, 0);
-  return passes->finish(film, 1, stats);
+  const bool complete = passes->addPass(film, 0);
+  return passes->finish(film, 1, !complete, stats);
 }
 
 }  // namespace rc

@@ -68,8 +68,10 @@ class PassRender {
   // rendered get nothing), and returns false.
   virtual bool addPass(Film& film, int firstSample) = 0;
   // The image of `film`, which holds `passes` passes (a cut one counted), with the integrator's
-  // extra layers; its statistics ("interrupted" = 1 if a pass was cut by ctx.cancel).
-  virtual Image finish(const Film& film, int passes, RenderStats& stats) = 0;
+  // extra layers, and its statistics. `stopped`: the render was stopped (SIGINT) rather than
+  // finished — stats "interrupted" = 1, and nothing that needs a finished render (rcache's cache
+  // save) is done. A pass the --time budget cut and the driver dropped does not count.
+  virtual Image finish(const Film& film, int passes, bool stopped, RenderStats& stats) = 0;
 };
 
 class Integrator {

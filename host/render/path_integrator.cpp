@@ -93,7 +93,6 @@ class PathPasses final : public PassRender {
   bool addPass(Film& film, int firstSample) override {
     loop_.firstSample = firstSample;
     const RenderLoopResult r = renderPathSamples(film);
-    total_.interrupted |= r.interrupted;
     total_.samples += r.samples;
     total_.nanSamples += r.nanSamples;
     total_.adaptivePixels += r.adaptivePixels;
@@ -101,7 +100,7 @@ class PathPasses final : public PassRender {
     return !r.interrupted;
   }
 
-  Image finish(const Film& film, int passes, RenderStats& stats) override {
+  Image finish(const Film& film, int passes, bool stopped, RenderStats& stats) override {
     Image image = film.develop();
     const double seconds = secondsSince(start_);
     const double rays = static_cast<double>(ctx_.accel.raysTraced() - rays0_);
@@ -117,7 +116,7 @@ class PathPasses final : public PassRender {
     stats.set("rays", rays);
     stats.set("rays_per_s", seconds > 0.0 ? rays / seconds : 0.0);
     stats.set("time_per_spp_s", seconds / spp);
-    if (total_.interrupted) stats.set("interrupted", 1.0);
+    if (stopped) stats.set("interrupted", 1.0);
     return image;
   }
 
@@ -148,7 +147,7 @@ class PathPasses final : public PassRender {
   const uint64_t rays0_;
   const CameraModel camera_;
   RenderLoopSettings loop_;
-  RenderLoopResult total_;  // summed over the passes
+  RenderLoopResult total_;  // summed over the passes (its `interrupted` unused: finish is told)
 };
 
 class PathIntegrator final : public Integrator {

@@ -66,6 +66,12 @@ Image renderProgressive(Integrator& integrator, const RenderContext& ctx, const 
   passCtx.cancel = stopper.flag();
 
   std::unique_ptr<PassRender> session = integrator.beginPasses(passCtx, stats);
+  // The passes' own progress restarts every pass: the bar shows the budget spent instead (the
+  // session reads passCtx by reference, and no pass is running while it changes).
+  if (ctx.progress)
+    passCtx.progress = [&ctx, start, budget = settings.seconds](const std::string&, double, double) {
+      ctx.progress("passes (--time)", std::min(secondsSince(start), budget), budget);
+    };
   const auto passesStart = SteadyClock::now();
   Film film(ctx.scene.film);
   int passes = 0, dropped = 0;
@@ -86,7 +92,7 @@ Image renderProgressive(Integrator& integrator, const RenderContext& ctx, const 
     const auto now = SteadyClock::now();
     if (now + (now - passStart) > deadline) break;
   }
-  Image image = session->finish(film, std::max(passes, 1), stats);
+  Image image = session->finish(film, std::max(passes, 1), stopper.cancelled(), stats);
   stats.set("time_budget_s", settings.seconds);
   stats.set("passes", passes);
   stats.set("pass_spp", session->passSpp());

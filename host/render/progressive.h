@@ -22,7 +22,7 @@ struct ProgressiveSettings {
 };
 
 // Statistics added to the integrator's: time_budget_s, passes, pass_spp, spp (= passes × pass_spp),
-// passes_dropped (a pass cut by the budget), time_passes_s (the passes alone, without the
+// passes_dropped (a pass after the first cut by the budget or SIGINT, not in the image), time_passes_s (the passes alone, without the
 // integrator's one-time work).
 Image renderProgressive(Integrator& integrator, const RenderContext& ctx, const ProgressiveSettings& settings,
                         RenderStats& stats);

@@ -53,6 +53,12 @@ other_seed=$("$RC" diff "$TMP/rcache_6.exr" "$TMP/rcache_5.exr" --json | sed -n 
 if [ -n "$same_seed" ] && less "$(awk -v a="$same_seed" 'BEGIN { print 3 * a }')" "$other_seed"; then pass rcache_passes_within_noise
 else fail rcache_passes_within_noise "relMSE to the ${passes}-spp render $same_seed, another seed's $other_seed"; fi
 
+# A render the budget ended is finished, not stopped: the cache is saved, nothing says interrupted.
+"$RC" "$DATA/tiny.xml" --integrator rcache --time 1 --spp 1 -D rays=64 -D fallback=false --quiet -t 2 \
+  -o "$TMP/save.exr" --cache-save "$TMP/save.rcc" --stats "$TMP/save.json" 2> "$TMP/save.err"
+if [ $? -eq 0 ] && [ -s "$TMP/save.rcc" ] && [ -z "$(stat_of "$TMP/save.json" interrupted)" ]; then pass time_cache_save
+else fail time_cache_save "$(cat "$TMP/save.err")"; fi
+
 # SIGINT: the image of the passes done is written, exit 130, and the statistics say so.
 "$RC" "$DATA/tiny.xml" --integrator path --time 60 --spp 1 --quiet -t 2 -o "$TMP/int.exr" --stats "$TMP/int.json" \
   2> "$TMP/int.err" &
