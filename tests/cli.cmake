@@ -19,3 +19,6 @@ set_tests_properties(dask_driver PROPERTIES LABELS dask TIMEOUT 300)
 # --cluster slurm|pbs through dask-jobqueue with fake batch commands; skipped (77) without dask-jobqueue.
 add_test(NAME dask_jobqueue COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/dask/jobqueue_test.py $<TARGET_FILE:rcache>)
 set_tests_properties(dask_jobqueue PROPERTIES LABELS dask TIMEOUT 300 SKIP_RETURN_CODE 77)
+# --time SECONDS (render/progressive.h): the budget honoured, whole passes, passes = a render of their spp.
+add_test(NAME cli_progressive COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/progressive_tests.sh $<TARGET_FILE:rcache>)
+set_tests_properties(cli_progressive PROPERTIES LABELS cli TIMEOUT 180)

@@ -17,6 +17,7 @@
 #include "app/progress_bar.h"
 #include "app/stats_report.h"
 #include "app/walk_render.h"
+#include "cache/rcache_integrator.h"
 #include "cl/sh_backend.h"
 #include "cl/verify.h"
 #include "core/atomic_file.h"
@@ -26,6 +27,7 @@
 #include "geometry/accel.h"
 #include "render/image_io.h"
 #include "render/light_sampler.h"
+#include "render/progressive.h"
 #include "scene/param_reader.h"
 #include "scene/scene_loader.h"
 
@@ -83,8 +85,9 @@ std::string chooseIntegrator(const std::string& requested, const Scene& scene) {
 
 // The integrator to render with (--integrator, else the file's), with the -D names that are its
 // parameters applied: they override the file; other names are scene parameters only, as in Mitsuba.
-// Nothing given on the command line is silently dropped: the options only rcache reads, and a -D
-// naming a parameter of another integrator than the one rendering, are refused.
+// Nothing given on the command line is silently dropped: the options only rcache reads are refused
+// for the others, and so is a -D naming a parameter of another integrator than the one rendering —
+// unless the file declares that name with <default>, where the define substitutes its $name.
 std::unique_ptr<Integrator> integratorFor(const RenderArgs& ra, const Scene& scene, const IntegratorEntry*& entry) {
   IntegratorSettings settings = scene.integrator;
   settings.type = chooseIntegrator(ra.integrator, scene);
@@ -102,6 +105,7 @@ std::unique_ptr<Integrator> integratorFor(const RenderArgs& ra, const Scene& sce
       settings.paramWhere[name] = flag;  // a bad value is reported as the option, not the file's line
       continue;
     }
+    if (scene.defaultNames.count(name)) continue;  // the file's own $name, substituted by the loader
     for (const IntegratorEntry& other : integratorEntries()) {
       const std::vector<std::string> otherNames = integratorParameterNames(other.name);
       if (std::find(otherNames.begin(), otherNames.end(), name) != otherNames.end())
@@ -144,10 +148,18 @@ RenderOptions renderOptionsFrom(const RenderArgs& ra) {
   opts.adaptive.maxSpp = ra.maxSpp;
   opts.seed = ra.seed;
   opts.aovs = ra.aovs;
-  opts.cacheSave = ra.cacheSave;
-  opts.cacheLoad = ra.cacheLoad;
-  opts.cacheReuse = ra.cacheReuse;
   return opts;
+}
+
+// The options only rcache reads go to the rcache integrator itself (integratorFor refused them for
+// the others). Null when the render uses another integrator.
+RcacheIntegrator* handRcacheOptions(Integrator& integrator, const RenderArgs& ra, ShBackend* backend) {
+  auto* rcache = dynamic_cast<RcacheIntegrator*>(&integrator);
+  if (rcache) {
+    rcache->setBackend(backend);
+    rcache->setCacheFiles({ra.cacheSave, ra.cacheLoad, ra.cacheReuse});
+  }
+  return rcache;
 }
 
 void reportStats(const RenderStats& stats, const RenderArgs& ra) {
@@ -198,21 +210,23 @@ int runRender(const std::vector<std::string>& args) {
   t.bvh = secondsSince(tBvh);
 
   std::unique_ptr<ShBackend> backend = backendFor(ra, *entry);
+  RcacheIntegrator* rcache = handRcacheOptions(*integrator, ra, backend.get());
 
   ProgressBar bar(ra.quiet);
   RenderOptions opts = renderOptionsFrom(ra);
-  RenderContext ctx{scene, accel, lights, opts, backend.get(), &gCancel,
+  RenderContext ctx{scene, accel, lights, opts, &gCancel,
                     [&bar](const std::string& phase, double done, double total) { bar.update(phase, done, total); }};
 
   if (ra.frames > 0) {
-    stats = renderWalk({ra, output, scene, ctx, *integrator, bar});
+    stats = renderWalk({ra, output, scene, ctx, *integrator, rcache, bar});
     stats.setText("scene", ra.scenePath);
     stats.set("time_s", secondsSince(tStart));
     reportStats(stats, ra);
     return gCancel ? 128 + gSignal.load() : 0;
   }
   const auto tRender = SteadyClock::now();
-  Image image = integrator->render(ctx, stats);
+  Image image = ra.timeBudget > 0.0 ? renderProgressive(*integrator, ctx, {ra.timeBudget}, stats)
+                                    : integrator->render(ctx, stats);
   t.render = secondsSince(tRender);
   bar.finish();
 

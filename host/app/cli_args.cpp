@@ -13,7 +13,7 @@ const char* usageText() {
   return "usage:\n"
          "  rcache SCENE.xml [-o out.exr|png|hdr] [-D name=value]... [--integrator auto|NAME]\n"
          "                   [--spp N] [--device cpu|opencl|opencl:P:D] [-t THREADS] [--seed S] [--quiet]\n"
-         "                   [--sampler independent|ldsampler] [--adaptive T] [--max-spp N]\n"
+         "                   [--sampler independent|ldsampler] [--adaptive T] [--max-spp N] [--time SECONDS]\n"
          "                   [--stats out.json] [--aov records,radius,technique,contributors]\n"
          "                   [--cache-save F] [--cache-load F [--cache-reuse]] [--lenient]\n"
          "                   [--crop X,Y,W,H] [--frames N --camera-path keys.json\n"
@@ -110,6 +110,9 @@ void checkOptionCombinations(const RenderArgs& r) {
     throw Error("--frame-range: A,B needs --frames N and 0 <= A < B <= N");
   if (r.cacheReuse && r.cacheLoad.empty()) throw Error("--cache-reuse: only with --cache-load F");
   if (r.maxSpp > 0 && r.adaptiveThreshold <= 0.0f) throw Error("--max-spp: only with --adaptive T");
+  if (r.timeBudget > 0.0 && r.adaptiveThreshold > 0.0f)
+    throw Error("--time: not with --adaptive (every pass takes spp samples per pixel)");
+  if (r.timeBudget > 0.0 && r.frames > 0) throw Error("--time: not with --frames (a walk renders each frame once)");
   if (r.maxSpp > 0 && r.spp > 0 && r.maxSpp < r.spp)
     throw Error("--max-spp: " + std::to_string(r.maxSpp) + " is below --spp " + std::to_string(r.spp));
 }
@@ -143,6 +146,8 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
         throw Error("--sampler: expected independent or ldsampler, got '" + r.sampler + "'");
     } else if (a == "--adaptive") {
       r.adaptiveThreshold = parseReal(a, cur.value(a), 1e-6, 10.0);
+    } else if (a == "--time") {
+      r.timeBudget = parseReal(a, cur.value(a), 1e-3, 1e7);
     } else if (a == "--max-spp") {
       r.maxSpp = static_cast<int>(parseInteger(a, cur.value(a), 1, 1 << 20));
     } else if (a == "--quiet" || a == "-q") {

@@ -22,6 +22,7 @@ struct RenderArgs {
   std::string sampler;                         // "" → scene's <sampler>
   float adaptiveThreshold = 0.0f;              // --adaptive T: per-pixel relative error target (0 = off)
   int maxSpp = 0;                              // --max-spp N: cap of adaptive sampling (0 → 16 × spp)
+  double timeBudget = 0.0;                     // --time SECONDS: passes of spp until then (0 = one pass)
   bool quiet = false;
   bool lenient = false;
   std::string statsPath;

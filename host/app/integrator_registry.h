@@ -23,7 +23,7 @@ namespace rc {
 
 struct IntegratorEntry {
   std::string name;
-  bool usesKernels = false;  // needs an SH backend (RenderContext::backend)
+  bool usesKernels = false;  // needs an SH backend (RcacheIntegrator::setBackend)
   bool pathFamily = false;   // `--integrator auto` may render it with rcache (same estimate, cached)
   // Reads every parameter the integrator takes (marking it used; with a ParamReader over no
   // Properties it only lists them) into `settings`, checking values and ranges.

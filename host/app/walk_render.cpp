@@ -41,9 +41,7 @@ bool pilotPathTraces(const WalkJob& job, const Camera& camera, int frame) {
   RenderContext ctx = job.ctx;
   ctx.options.seed += static_cast<uint64_t>(frame);
   ctx.options.spp = 1;
-  ctx.options.cacheLoad.clear();
-  ctx.options.cacheSave.clear();
-  ctx.options.cacheReuse = false;
+  if (job.rcache) job.rcache->setCacheFiles({});
   ctx.progress = nullptr;
   RenderStats stats;
   try {
@@ -73,7 +71,7 @@ RenderStats renderWalk(const WalkJob& job) {
   const int first = ra.firstFrame, end = ra.endFrame > 0 ? ra.endFrame : ra.frames;
   // A walk whose first frame caching cannot pay renders every frame on its own (each deciding as
   // a still does) instead of forcing a shared cache on it — unless a cache file was asked for.
-  const bool rcache = job.integrator.name() == "rcache" && !ra.freshFrames;
+  const bool rcache = job.rcache && !ra.freshFrames;
   const bool pathTraced = rcache && ra.cacheLoad.empty() && ra.cacheSave.empty() && first < end &&
                           pilotPathTraces(job, cameraOfFrame(base, keys, first, ra.frames), first);
   const bool shareCache = rcache && !pathTraced;
@@ -96,9 +94,8 @@ RenderStats renderWalk(const WalkJob& job) {
       job.bar.update("frames", f + std::min(0.999, work > 0.0 ? done / work : 0.0), n);
     };
     if (shareCache) {
-      ctx.options.cacheLoad = f == first ? ra.cacheLoad : cachePath;
-      ctx.options.cacheReuse = !ctx.options.cacheLoad.empty();
-      ctx.options.cacheSave = cachePath;
+      const std::string load = f == first ? ra.cacheLoad : cachePath;
+      job.rcache->setCacheFiles({cachePath, load, !load.empty()});
     }
     RenderStats stats;
     const auto t0 = SteadyClock::now();

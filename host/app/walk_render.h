@@ -25,6 +25,7 @@
 
 #include "app/cli_args.h"
 #include "app/progress_bar.h"
+#include "cache/rcache_integrator.h"
 #include "render/integrator.h"
 
 namespace rc {
@@ -35,6 +36,7 @@ struct WalkJob {
   Scene& scene;        // the camera is moved frame by frame; ctx.scene refers to it
   const RenderContext& ctx;
   Integrator& integrator;
+  RcacheIntegrator* rcache;  // the same integrator when it is rcache (its cache files), else null
   ProgressBar& bar;
 };
 

@@ -40,10 +40,11 @@ void frameRows(const Frame& f, float* out) {
 
 }  // namespace
 
-CacheEngine::CacheEngine(const RenderContext& ctx, const RcacheParams& params, const BrdfTableSet& tables,
-                         const CameraModel& camera, int maxDepth, int rrDepth, Vec3 sceneLo, Vec3 sceneHi)
-    : ctx_(ctx), params_(params), tables_(tables), camera_(camera), maxDepth_(maxDepth), rrDepth_(rrDepth),
-      lo_(sceneLo), hi_(sceneHi) {
+CacheEngine::CacheEngine(const RenderContext& ctx, ShBackend& backend, const RcacheParams& params,
+                         const BrdfTableSet& tables, const CameraModel& camera, int maxDepth, int rrDepth,
+                         Vec3 sceneLo, Vec3 sceneHi)
+    : ctx_(ctx), backend_(backend), params_(params), tables_(tables), camera_(camera), maxDepth_(maxDepth),
+      rrDepth_(rrDepth), lo_(sceneLo), hi_(sceneHi) {
   const auto& bsdfs = ctx.scene.bsdfs;
   const auto& plans = tables.plans();
   planTech_.assign(bsdfs.size(), Technique::ImportanceSampling);
@@ -68,7 +69,7 @@ CacheEngine::CacheEngine(const RenderContext& ctx, const RcacheParams& params, c
                                            split && params.areaCache);
   if (envSplit_->active())
     residualCtx_ = std::make_unique<RenderContext>(RenderContext{ctx.scene, ctx.accel, envSplit_->residualLights(),
-                                                                 ctx.options, ctx.backend, ctx.cancel, ctx.progress});
+                                                                 ctx.options, ctx.cancel, ctx.progress});
 }
 
 const RenderContext& CacheEngine::directLightContext(const ShadePoint& sp) const {
@@ -496,7 +497,7 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
   traceRecordRays(cands, rayBatch, hits);
   ProjectResult projected;
   auto t0 = SteadyClock::now();
-  ctx_.backend->project(rayBatch, projected);
+  backend_.project(rayBatch, projected);
   stats_.projection_s += secondsSince(t0);
   const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
   if (!params_.gradients) {
@@ -513,7 +514,7 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
   WorldCopies world;
   if (params_.worldFrame) {
     t0 = SteadyClock::now();
-    world = rotateToWorld(*ctx_.backend, key.order, infos, projected.lambda, projected.gradT, projected.gradB);
+    world = rotateToWorld(backend_, key.order, infos, projected.lambda, projected.gradT, projected.gradB);
     stats_.projection_s += secondsSince(t0);
   }
   std::vector<uint32_t> shrunk;
@@ -600,7 +601,7 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
     for (uint32_t r : used) remap[r] = -1;
     std::vector<float> part;
     const auto t0 = SteadyClock::now();
-    ctx_.backend->interpolate(interp, part);
+    backend_.interpolate(interp, part);
     stats_.interpolation_s += secondsSince(t0);
     for (size_t j = 0; j < idx.size(); ++j)
       std::copy(part.begin() + K * j, part.begin() + K * (j + 1), lambda.begin() + K * idx[j]);
@@ -672,7 +673,7 @@ void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, 
   }
   tables_.fillBatch(dotBatch);
   std::vector<float> res;
-  ctx_.backend->brdfDot(dotBatch, res);
+  backend_.brdfDot(dotBatch, res);
   for (size_t j = 0; j < count; ++j) {
     // Extrapolation by gradients (or SH ringing) can dip below zero where light changes
     // abruptly; negative radiance is not physical and is clamped.
@@ -734,7 +735,7 @@ std::vector<Color> CacheEngine::recordPredictions(const CacheKey& key, const std
     addRecords(cache, ids, interp);
     std::vector<float> lambda;
     auto t0 = SteadyClock::now();
-    ctx_.backend->interpolate(interp, lambda);
+    backend_.interpolate(interp, lambda);
     stats_.interpolation_s += secondsSince(t0);
     std::vector<size_t> idx(pairPoint.begin() + begin, pairPoint.begin() + begin + count);
     std::vector<Color> part(count);

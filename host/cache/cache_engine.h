@@ -58,9 +58,11 @@ struct LookupAov {
   float meanA = 0, meanRadiusPx = 0;
 };
 
+class ShBackend;  // cl/sh_backend.h: the records' batched SH math
+
 class CacheEngine {
  public:
-  CacheEngine(const RenderContext& ctx, const RcacheParams& params, const BrdfTableSet& tables,
+  CacheEngine(const RenderContext& ctx, ShBackend& backend, const RcacheParams& params, const BrdfTableSet& tables,
               const CameraModel& camera, int maxDepth, int rrDepth, Vec3 sceneLo, Vec3 sceneHi);
 
   // L_o(p, ω_o) without p's own emission. out.size() == points.size().
@@ -108,6 +110,7 @@ class CacheEngine {
 
  private:
   const RenderContext& ctx_;
+  ShBackend& backend_;
   RcacheParams params_;
   const BrdfTableSet& tables_;
   const CameraModel& camera_;

@@ -21,7 +21,7 @@ constexpr size_t kPilotPoints = 4096;
 
 FallbackDecision decideFallback(const RcacheRun& run) {
   FallbackDecision d;
-  if (!run.params.fallback || !run.ctx.options.cacheLoad.empty() || !run.ctx.options.cacheSave.empty()) {
+  if (!run.params.fallback || !run.files.load.empty() || !run.files.save.empty()) {
     d.reason = "not considered";
     return d;
   }

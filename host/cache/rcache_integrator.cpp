@@ -52,97 +52,144 @@ RcacheParams paramsOf(const IntegratorSettings& s) {
   return readRcacheParams(in);
 }
 
-class RcacheIntegrator : public Integrator {
- public:
-  explicit RcacheIntegrator(const IntegratorSettings& s) : settings_(s), params_(paramsOf(s)) {}
-  std::string name() const override { return "rcache"; }
-  Image render(const RenderContext& ctx, RenderStats& stats) override;
-
- private:
-  IntegratorSettings settings_;
-  RcacheParams params_;
-};
-
-// The phases of docs/ARCHITECTURE.md §Pipeline, each in its own file of host/cache/.
-Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
-  const auto start = SteadyClock::now();
-  const Scene& scene = ctxIn.scene;
-  const RcacheAovs aovs = parseRcacheAovs(ctxIn.options.aovs);
-  std::unique_ptr<ShBackend> ownBackend = ctxIn.backend ? nullptr : makeScalarBackend();
-  ShBackend& backend = ctxIn.backend ? *ctxIn.backend : *ownBackend;
-  const RenderContext ctx{scene, ctxIn.accel, ctxIn.lights, ctxIn.options, &backend, ctxIn.cancel, ctxIn.progress};
-
-  BrdfTableSet tables;
-  buildTables(scene, params_, stats, tables);
-  const double tablesS = secondsSince(start);
-
-  Film film(scene.film);
-  const int spp = ctx.options.spp > 0 ? ctx.options.spp : scene.sampleCount;
-  // Before the fill, not after it: the final pass's smallest batch is one film row of spp samples.
-  checkFinalPassMemory(static_cast<size_t>(film.width()) * static_cast<size_t>(spp), film.width(), spp);
-  const CameraModel camera(scene.camera, scene.film);
-  Vec3 lo, hi;
-  finiteSceneBounds(scene, lo, hi);
-  CacheEngine engine(ctx, params_, tables, camera, settings_.maxDepth, settings_.rrDepth, lo, hi);
-  const PrimaryHits primaries(ctx, engine, camera, settings_.maxDepth, settings_.hideEmitters);
-  const RcacheRun run{ctx, params_, tables, camera, engine, primaries, film.width(), film.height(),
-                      spp, scene.samplerSeed + ctx.options.seed, usesLowDiscrepancy(ctx)};
-  // Records hold the cached part of the scene's light: a cache saved under another split must not load.
+// What a cache file must match to be loaded: the scene, and the light split its records were made
+// under (they hold the cached part of the scene's light).
+uint64_t cacheKeyOf(const Scene& scene, const IntegratorSettings& settings, const RcacheParams& params,
+                    const CacheEngine& engine) {
   const LightSplitSummary& split = engine.lightSplit().summary();
   uint32_t thresholdBits = 0;
   std::memcpy(&thresholdBits, &split.threshold, sizeof(thresholdBits));
   const uint64_t splitKey = split.active ? (uint64_t(thresholdBits) << 2 | uint64_t(split.environmentCached) << 1 |
                                             uint64_t(split.areaCached)) + 1 : 0;
-  const uint64_t sceneHash = hashMix(cacheSceneHash(scene, settings_.maxDepth, params_.tlMode), splitKey);
+  return hashMix(cacheSceneHash(scene, settings.maxDepth, params.tlMode), splitKey);
+}
+
+// One rcache render as the phases of docs/ARCHITECTURE.md §Pipeline, each in its own file of
+// host/cache/: the constructor runs what is done once (tables, pilot, cache load, fill), addPass
+// the final pass and adaptive rounds over one pass of samples, finish the save and statistics.
+// When the pilot decides for path tracing, the path integrator's passes render instead.
+class RcachePasses final : public PassRender {
+ public:
+  RcachePasses(const RenderContext& ctx, const IntegratorSettings& settings, const RcacheParams& params,
+               ShBackend* backend, const CacheFiles& files, RenderStats& stats);
+  int passSpp() const override { return spp_; }
+  bool addPass(Film& film, int firstSample) override;
+  Image finish(const Film& film, int passes, bool stopped, RenderStats& stats) override;
+
+ private:
+  const RenderContext& ctx_;
+  const IntegratorSettings& settings_;
+  const RcacheParams& params_;
+  const CacheFiles files_;
+  const SteadyClock::time_point start_ = SteadyClock::now();
+  const RcacheAovs aovs_;
+  std::unique_ptr<ShBackend> ownBackend_;
+  ShBackend& backend_;
+  BrdfTableSet tables_;
+  double tablesS_ = 0.0;
+  int spp_ = 0;
+  CameraModel camera_;
+  std::unique_ptr<CacheEngine> engine_;
+  std::unique_ptr<PrimaryHits> primaries_;
+  std::unique_ptr<RcacheRun> run_;
+  FallbackDecision fallback_;
+  std::unique_ptr<Integrator> pathIntegrator_;  // the pilot chose path tracing: it renders the passes
+  std::unique_ptr<PassRender> pathPasses_;
+  size_t recordsLoaded_ = 0;
+  size_t recordsSkipped_ = 0;  // loaded records too coarse for this view
+  FillReport fill_;
+  FinalPassTotals totals_;
+  double finalS_ = 0.0;
+};
+
+RcachePasses::RcachePasses(const RenderContext& ctx, const IntegratorSettings& settings, const RcacheParams& params,
+                           ShBackend* backend, const CacheFiles& files, RenderStats& stats)
+    : ctx_(ctx), settings_(settings), params_(params), files_(files), aovs_(parseRcacheAovs(ctx.options.aovs)),
+      ownBackend_(backend ? nullptr : makeScalarBackend()), backend_(backend ? *backend : *ownBackend_),
+      camera_(ctx.scene.camera, ctx.scene.film) {
+  const Scene& scene = ctx.scene;
+  buildTables(scene, params_, stats, tables_);
+  tablesS_ = secondsSince(start_);
+
+  const Film film(scene.film);
+  spp_ = ctx.options.spp > 0 ? ctx.options.spp : scene.sampleCount;
+  // Before the fill, not after it: the final pass's smallest batch is one film row of spp samples.
+  checkFinalPassMemory(static_cast<size_t>(film.width()) * static_cast<size_t>(spp_), film.width(), spp_);
+  Vec3 lo, hi;
+  finiteSceneBounds(scene, lo, hi);
+  engine_ = std::make_unique<CacheEngine>(ctx, backend_, params_, tables_, camera_, settings_.maxDepth,
+                                          settings_.rrDepth, lo, hi);
+  primaries_ = std::make_unique<PrimaryHits>(ctx, *engine_, camera_, settings_.maxDepth, settings_.hideEmitters);
+  run_.reset(new RcacheRun{ctx, backend_, files_, params_, tables_, camera_, *engine_, *primaries_, film.width(),
+                           film.height(), spp_, scene.samplerSeed + ctx.options.seed, usesLowDiscrepancy(ctx)});
 
   // Phase 0: a pilot decides whether the cache can pay here at all (cache/path_fallback.h).
-  const FallbackDecision fallback = decideFallback(run);
-  if (fallback.pathTrace) {
-    Image img = makePathIntegrator(settings_)->render(ctx, stats);
-    stats.setText("fallback", fallback.reason);
-    stats.set("pilot_served_share", fallback.servedShare);
-    return img;
+  fallback_ = decideFallback(*run_);
+  if (fallback_.pathTrace) {
+    pathIntegrator_ = makePathIntegrator(settings_);
+    pathPasses_ = pathIntegrator_->beginPasses(ctx, stats);
+    return;
   }
-
-  const size_t recordsLoaded = ctx.options.cacheLoad.empty() ? 0
-      : loadCachesInto(engine, ctx.options.cacheLoad, sceneHash, params_.worldFrame, backend);
+  if (!files_.load.empty())
+    recordsLoaded_ = loadCachesInto(*engine_, files_.load, cacheKeyOf(scene, settings_, params_, *engine_),
+                                    params_.worldFrame, backend_);
   // Loaded records too coarse for this view are passed over (cache/view_refinement.h).
-  const size_t recordsSkipped = recordsLoaded > 0 ? skipCoarseRecords(engine, params_) : 0;
+  if (recordsLoaded_ > 0) recordsSkipped_ = skipCoarseRecords(*engine_, params_);
   // --cache-reuse (walk-throughs, distributed fills): the loaded records stay as they are and the
   // fill adds records only where this view finds none.
-  const bool fillNeeded = ctx.options.cacheLoad.empty() || ctx.options.cacheReuse;
-  const FillReport fill = fillNeeded ? fillCache(run) : FillReport{};
-  bool interrupted = fill.interrupted;
+  if (files_.load.empty() || files_.reuse) fill_ = fillCache(*run_);
+}
 
-  const auto finalStart = SteadyClock::now();
-  AdaptivePixels adaptive(run.width, run.height, spp, ctx.options.adaptive);
-  FinalPass pass(run, aovs, film, adaptive);
+bool RcachePasses::addPass(Film& film, int firstSample) {
+  if (pathPasses_) return pathPasses_->addPass(film, firstSample);
+  if (fill_.interrupted) return false;
+  const auto passStart = SteadyClock::now();
+  bool interrupted = false;
+  AdaptivePixels adaptive(run_->width, run_->height, spp_, ctx_.options.adaptive, firstSample);
+  FinalPass pass(*run_, aovs_, film, adaptive);
   pass.shadeBands(interrupted);
-  const std::unique_ptr<Film> adaptiveFilm = runAdaptiveRounds(run, pass, adaptive, film, interrupted);
+  const std::unique_ptr<Film> adaptiveFilm = runAdaptiveRounds(*run_, pass, adaptive, film, interrupted);
   pass.mergeBands();
   if (adaptiveFilm) film.add(*adaptiveFilm);
-  const double finalS = secondsSince(finalStart);
+  totals_.add(pass, adaptive);
+  finalS_ += secondsSince(passStart);
+  return !interrupted;
+}
 
+Image RcachePasses::finish(const Film& film, int passes, bool stopped, RenderStats& stats) {
+  if (pathPasses_) {
+    Image img = pathPasses_->finish(film, passes, stopped, stats);
+    stats.setText("fallback", fallback_.reason);
+    stats.set("pilot_served_share", fallback_.servedShare);
+    return img;
+  }
   Image img = film.develop();
-  if (aovs.records) addRecordsAov(engine, img);
-  if (!ctx.options.cacheSave.empty() && !interrupted) {
+  if (aovs_.records) addRecordsAov(*engine_, img);
+  // A stopped render's caches lack what its unfinished phases would have added.
+  stopped |= fill_.interrupted;
+  if (!files_.save.empty() && !stopped) {
     // A failed save (full disk) must not lose the image: the CLI writes it, then reports this.
     try {
-      saveCaches(engine, ctx.options.cacheSave, sceneHash);
+      saveCaches(*engine_, files_.save, cacheKeyOf(ctx_.scene, settings_, params_, *engine_));
     } catch (const Error& e) {
       stats.setText("cache_save_error", e.what());
     }
   }
-
-  reportRcacheStats(run, {secondsSince(start), tablesS, finalS, fill, pass, adaptive, recordsLoaded, interrupted},
+  reportRcacheStats(*run_, {secondsSince(start_), tablesS_, finalS_, fill_, totals_, recordsLoaded_, stopped},
                     stats);
-  stats.setText("fallback", fallback.reason);
-  if (fallback.pilotPoints > 0) stats.set("pilot_served_share", fallback.servedShare);
-  if (recordsLoaded > 0) stats.set("records_too_coarse", double(recordsSkipped));
+  stats.setText("fallback", fallback_.reason);
+  if (fallback_.pilotPoints > 0) stats.set("pilot_served_share", fallback_.servedShare);
+  if (recordsLoaded_ > 0) stats.set("records_too_coarse", double(recordsSkipped_));
   return img;
 }
 
 }  // namespace
+
+RcacheIntegrator::RcacheIntegrator(const IntegratorSettings& s) : settings_(s), params_(paramsOf(s)) {}
+
+std::unique_ptr<PassRender> RcacheIntegrator::beginPasses(const RenderContext& ctx, RenderStats& stats) {
+  return std::make_unique<RcachePasses>(ctx, settings_, params_, backend_, files_, stats);
+}
 
 std::unique_ptr<Integrator> makeRcacheIntegrator(const IntegratorSettings& settings) {
   return std::make_unique<RcacheIntegrator>(settings);

@@ -53,16 +53,41 @@
 //   fallback     true   a pilot decides before the fill whether the cache can pay; if it would
 //                       serve less than fallback_share of the image, the image is path traced
 //   fallback_share 0.25 that threshold (cache/path_fallback.h says why 0.25)
+//
+// Besides the parameters it takes its own options (cache/rcache_options.h) and the SH backend
+// (--device), set by the CLI after the registry made it.
 #include <memory>
 
 #include "cache/cache_params.h"
+#include "cache/rcache_options.h"
 #include "render/integrator.h"
 #include "scene/scene.h"
 
 namespace rc {
 
-// Reads the parameters from settings.props; throws rc::Error naming a parameter with an invalid
-// value (the registry, app/integrator_registry.h, adds the location and reports unused ones).
+class ShBackend;  // cl/sh_backend.h
+
+class RcacheIntegrator : public Integrator {
+ public:
+  // Reads the parameters from settings.props; throws rc::Error naming a parameter with an invalid
+  // value (the registry, app/integrator_registry.h, adds the location and reports unused ones).
+  explicit RcacheIntegrator(const IntegratorSettings& settings);
+  std::string name() const override { return "rcache"; }
+  std::unique_ptr<PassRender> beginPasses(const RenderContext& ctx, RenderStats& stats) override;
+
+  // Batched SH math for the records (owned by the caller, outliving the renders); null: the scalar
+  // references, made per render.
+  void setBackend(ShBackend* backend) { backend_ = backend; }
+  void setCacheFiles(const CacheFiles& files) { files_ = files; }
+  const CacheFiles& cacheFiles() const { return files_; }
+
+ private:
+  IntegratorSettings settings_;
+  RcacheParams params_;
+  ShBackend* backend_ = nullptr;
+  CacheFiles files_;
+};
+
 std::unique_ptr<Integrator> makeRcacheIntegrator(const IntegratorSettings& settings);
 
 }  // namespace rc

@@ -1,6 +1,6 @@
 #pragma once
 // What every phase of one rcache render reads (cache_fill, final_pass, adaptive_rounds,
-// rcache_stats): the render context with its SH backend, the parameters, the material tables, the
+// rcache_stats): the render context, the SH backend, the cache files, the parameters, the material tables, the
 // camera, the engine that owns the caches and the primary-hit tracer. Built once by
 // RcacheIntegrator::render; the phases keep their own outputs in their own result structs.
 #include <atomic>
@@ -10,13 +10,16 @@
 #include "cache/cache_engine.h"
 #include "cache/cache_params.h"
 #include "cache/primary_hits.h"
+#include "cache/rcache_options.h"
 #include "render/camera.h"
 #include "render/integrator.h"
 
 namespace rc {
 
 struct RcacheRun {
-  const RenderContext& ctx;  // ctx.backend is never null here
+  const RenderContext& ctx;
+  ShBackend& backend;
+  const CacheFiles& files;
   const RcacheParams& params;
   const BrdfTableSet& tables;
   const CameraModel& camera;

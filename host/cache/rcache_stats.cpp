@@ -8,6 +8,16 @@
 
 namespace rc {
 
+void FinalPassTotals::add(const FinalPass& pass, const AdaptivePixels& adaptive) {
+  cameraRays += pass.cameraRays();
+  nanSamples += pass.nanSamples();
+  directLightOnly += pass.directLightOnly();
+  bandsReshaded += pass.bandsReshaded();
+  samples += adaptive.totalSamples();
+  pixelsAboveSpp += adaptive.pixelsAboveSpp();
+  maxPixelSamples = std::max(maxPixelSamples, adaptive.maxSamples());
+}
+
 namespace {
 
 void reportTimes(const RcacheRun& run, const RcacheReport& r, RenderStats& stats) {
@@ -54,11 +64,11 @@ void reportRecords(const RcacheRun& run, const RcacheReport& r, RenderStats& sta
 void reportRaysAndLookups(const RcacheRun& run, const RcacheReport& r, RenderStats& stats) {
   const EngineStats& es = run.engine.stats();
   const Accel& accel = run.ctx.accel;
-  const uint64_t cameraRays = r.pass.cameraRays();
+  const uint64_t cameraRays = r.passes.cameraRays;
   stats.set("rays_record", double(es.recordRays.load()));
   stats.set("rays_camera", double(cameraRays));
-  reportAdaptiveSampling(stats, run.ctx.options.adaptive, run.spp, r.adaptive.totalSamples(),
-                         r.adaptive.pixelsAboveSpp(), r.adaptive.maxSamples(), double(run.width) * run.height);
+  reportAdaptiveSampling(stats, run.ctx.options.adaptive, run.spp, r.passes.samples, r.passes.pixelsAboveSpp,
+                         r.passes.maxPixelSamples, double(run.width) * run.height);
   stats.set("rays_path", double(es.pathRays.load()));
   stats.set("rays_total", double(accel.raysTraced()));
   // "rays" and "rays_per_s" carry the same meaning as in the path tracer's statistics.
@@ -67,13 +77,13 @@ void reportRaysAndLookups(const RcacheRun& run, const RcacheReport& r, RenderSta
   stats.set("lookups", double(es.lookups.load()));
   stats.set("records_per_lookup", es.lookups ? double(es.contributions.load()) / double(es.lookups.load()) : 0.0);
   stats.set("adaptive_shrinks", double(es.adaptiveShrinks.load()));
-  stats.set("samples_dropped_nan", double(es.droppedSamples.load() + r.pass.nanSamples()));
-  stats.set("bands_reshaded", double(r.pass.bandsReshaded()));
-  stats.set("direct_light_only_fraction", cameraRays ? double(r.pass.directLightOnly()) / double(cameraRays) : 0.0);
+  stats.set("samples_dropped_nan", double(es.droppedSamples.load() + r.passes.nanSamples));
+  stats.set("bands_reshaded", double(r.passes.bandsReshaded));
+  stats.set("direct_light_only_fraction", cameraRays ? double(r.passes.directLightOnly) / double(cameraRays) : 0.0);
 }
 
 void reportKernels(const RcacheRun& run, RenderStats& stats) {
-  const ShBackend& backend = *run.ctx.backend;
+  const ShBackend& backend = run.backend;
   const KernelTimes& kt = backend.times();
   stats.set("kernel_project_s", kt.project_s);
   stats.set("kernel_rotate_s", kt.rotate_s);
@@ -117,8 +127,8 @@ std::string skippedWork(const RcacheRun& run) {
   }
   if (!anyGlossy) skipped += "no glossy material: no glossy radiance cache, no glossy BRDF tables; ";
   if (!anyCached) skipped += "no cached material: no BRDF tables, no records; ";
-  if (!run.ctx.options.cacheLoad.empty() && !run.ctx.options.cacheReuse)
-    skipped += "cache fill passes (cache loaded from " + run.ctx.options.cacheLoad + "); ";
+  if (!run.files.load.empty() && !run.files.reuse)
+    skipped += "cache fill passes (cache loaded from " + run.files.load + "); ";
   return skipped.empty() ? "nothing" : skipped;
 }
 

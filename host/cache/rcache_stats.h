@@ -9,11 +9,17 @@
 
 namespace rc {
 
+// What the final passes did, summed over the passes of a render.
+struct FinalPassTotals {
+  uint64_t cameraRays = 0, nanSamples = 0, directLightOnly = 0, samples = 0, pixelsAboveSpp = 0;
+  int bandsReshaded = 0, maxPixelSamples = 0;
+  void add(const FinalPass& pass, const AdaptivePixels& adaptive);
+};
+
 struct RcacheReport {
   double totalS = 0, tablesS = 0, finalS = 0;
   const FillReport& fill;
-  const FinalPass& pass;
-  const AdaptivePixels& adaptive;
+  const FinalPassTotals& passes;
   size_t recordsLoaded = 0;
   bool interrupted = false;
 };

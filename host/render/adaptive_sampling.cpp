@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/error.h"
 #include "render/integrator.h"
 
 namespace rc {
@@ -14,10 +15,13 @@ int effectiveMaxSpp(const AdaptiveSettings& s, int spp) {
   return static_cast<int>(std::clamp<long long>(cap, spp, 1 << 20));
 }
 
-AdaptivePixels::AdaptivePixels(int width, int height, int spp, const AdaptiveSettings& settings)
+AdaptivePixels::AdaptivePixels(int width, int height, int spp, const AdaptiveSettings& settings, int firstSample)
     : settings_(settings), width_(width), height_(height), spp_(spp), maxSpp_(effectiveMaxSpp(settings, spp)),
+      first_(firstSample),
       px_(static_cast<size_t>(width) * height), ranges_(px_.size()), error_(px_.size(), 0.0f),
       rowMax_(px_.size(), 0.0f), dirty_(px_.size(), 1), rowHasRange_(static_cast<size_t>(height), 0) {
+  // A pixel's error estimate compares its first samples with all of them, from index 0.
+  if (settings.enabled() && firstSample != 0) throw Error("adaptive sampling: not in a later progressive pass");
   restart(0, px_.size());
 }
 
@@ -26,7 +30,7 @@ void AdaptivePixels::restart(size_t begin, size_t end) {
     px_[p] = Pixel{};
     px_[p].n = spp_;
     px_[p].halfN = spp_ / 2;
-    ranges_[p] = SampleRange{0, spp_};
+    ranges_[p] = SampleRange{first_, first_ + spp_};
     dirty_[p] = 1;
     rowHasRange_[p / static_cast<size_t>(width_)] = 1;
   }

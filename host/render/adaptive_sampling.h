@@ -44,8 +44,10 @@ struct SampleRange {
 // by one thread each at a time (tiles, bands), so add() needs no lock.
 class AdaptivePixels {
  public:
-  AdaptivePixels(int width, int height, int spp, const AdaptiveSettings& settings);
-  // The samples each pixel takes in the current round (round 0: [0, spp) everywhere).
+  // firstSample: the sample indices of round 0 are [firstSample, firstSample + spp) (a later pass
+  // of a progressive render, render/progressive.h); > 0 only without adaptive sampling.
+  AdaptivePixels(int width, int height, int spp, const AdaptiveSettings& settings, int firstSample = 0);
+  // The samples each pixel takes in the current round (round 0: [firstSample, firstSample + spp)).
   const std::vector<SampleRange>& ranges() const { return ranges_; }
   // Forget pixels [begin, end): they are about to take their spp first samples again.
   void restart(size_t begin, size_t end);
@@ -69,7 +71,7 @@ class AdaptivePixels {
     int n = 0, halfN = 0;
   };
   AdaptiveSettings settings_;
-  int width_, height_, spp_, maxSpp_;
+  int width_, height_, spp_, maxSpp_, first_;
   std::vector<Pixel> px_;
   std::vector<SampleRange> ranges_;
   std::vector<float> error_;   // errorSquared per pixel, as of the last round

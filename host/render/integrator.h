@@ -15,7 +15,7 @@
 namespace rc {
 
 class LightSampler;  // render/light_sampler.h
-class ShBackend;     // cl/sh_backend.h
+class Film;          // render/film.h
 
 struct RenderOptions {
   int spp = 0;               // 0 = scene's sample_count
@@ -23,9 +23,6 @@ struct RenderOptions {
   std::string sampler;       // "" = the scene's <sampler>; else independent | ldsampler
   AdaptiveSettings adaptive; // --adaptive T, --max-spp N (off by default)
   std::vector<std::string> aovs;  // requested AOV names (integrator-specific)
-  std::string cacheSave;          // rcache: write the view-independent cache here after rendering
-  std::string cacheLoad;          // rcache: start from this cache file
-  bool cacheReuse = false;        // rcache: with cacheLoad, still fill (adds records where none serve)
 };
 
 // Named statistics, printed in insertion order and written to --stats JSON.
@@ -53,19 +50,39 @@ struct RenderContext {
   const Accel& accel;
   const LightSampler& lights;
   RenderOptions options;
-  ShBackend* backend = nullptr;  // batched SH math (rcache integrator); null for path
   std::atomic<bool>* cancel = nullptr;  // set by SIGINT: stop early, keep what is done
   // Progress reporting: called with (phase name, done, total); the CLI draws the bar.
   std::function<void(const std::string&, double, double)> progress;
+};
+
+// One render of an integrator as passes of samples: made by Integrator::beginPasses, which does
+// the work done once per render (rcache: BRDF tables, pilot, cache fill). A render is one pass
+// (Integrator::render); --time renders as many as its budget allows (render/progressive.h).
+class PassRender {
+ public:
+  virtual ~PassRender() = default;
+  // Samples per pixel of one pass: RenderOptions::spp, else the scene's sample_count.
+  virtual int passSpp() const = 0;
+  // Adds samples [firstSample, firstSample + passSpp()) of every pixel's streams to `film` (the
+  // scene's film). Honours ctx.cancel: stops early, keeping what is done in `film` (pixels not yet
+  // rendered get nothing), and returns false.
+  virtual bool addPass(Film& film, int firstSample) = 0;
+  // The image of `film`, which holds `passes` passes (a cut one counted), with the integrator's
+  // extra layers, and its statistics. `stopped`: the render was stopped (SIGINT) rather than
+  // finished — stats "interrupted" = 1, and nothing that needs a finished render (rcache's cache
+  // save) is done. A pass the --time budget cut and the driver dropped does not count.
+  virtual Image finish(const Film& film, int passes, bool stopped, RenderStats& stats) = 0;
 };
 
 class Integrator {
  public:
   virtual ~Integrator() = default;
   virtual std::string name() const = 0;
-  // Renders the whole image. Must honour ctx.cancel (return a partial image, pixels not yet
-  // rendered black, and set stats "interrupted" = 1).
-  virtual Image render(const RenderContext& ctx, RenderStats& stats) = 0;
+  // `ctx` outlives the returned passes.
+  virtual std::unique_ptr<PassRender> beginPasses(const RenderContext& ctx, RenderStats& stats) = 0;
+  // Renders the whole image: one pass. Honours ctx.cancel (a partial image, pixels not yet
+  // rendered black, and stats "interrupted" = 1).
+  Image render(const RenderContext& ctx, RenderStats& stats);
 };
 
 }  // namespace rc

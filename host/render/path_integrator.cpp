@@ -1,9 +1,9 @@
 #include "render/path_integrator.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include "core/error.h"
+#include "core/timing.h"
 #include "render/camera.h"
 #include "render/direct_light.h"
 #include "render/film.h"
@@ -73,6 +73,83 @@ Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings,
 
 namespace {
 
+// The path tracer's passes (render/integrator.h): each is the render loop over the pass's sample
+// indices, into the caller's film.
+class PathPasses final : public PassRender {
+ public:
+  PathPasses(const RenderContext& ctx, const IntegratorSettings& settings, PathCore core, BatchQuery query)
+      : ctx_(ctx), settings_(settings), core_(core), query_(query), rays0_(ctx.accel.raysTraced()),
+        camera_(ctx.scene.camera, ctx.scene.film) {
+    loop_.spp = ctx.options.spp > 0 ? ctx.options.spp : ctx.scene.sampleCount;
+    if (loop_.spp <= 0) throw Error("sampler: sample_count must be positive");
+    loop_.seed = ctx.scene.samplerSeed + ctx.options.seed;
+    loop_.lowDiscrepancy = usesLowDiscrepancy(ctx);
+    loop_.cameraRay = [this](const Vec2& filmPos) { return camera_.generate(filmPos); };
+    loop_.adaptive = ctx.options.adaptive;
+    loop_.phase = "path";
+  }
+  int passSpp() const override { return loop_.spp; }
+
+  bool addPass(Film& film, int firstSample) override {
+    loop_.firstSample = firstSample;
+    const RenderLoopResult r = renderPathSamples(film);
+    total_.samples += r.samples;
+    total_.nanSamples += r.nanSamples;
+    total_.adaptivePixels += r.adaptivePixels;
+    total_.maxPixelSamples = std::max(total_.maxPixelSamples, r.maxPixelSamples);
+    return !r.interrupted;
+  }
+
+  Image finish(const Film& film, int passes, bool stopped, RenderStats& stats) override {
+    Image image = film.develop();
+    const double seconds = secondsSince(start_);
+    const double rays = static_cast<double>(ctx_.accel.raysTraced() - rays0_);
+    const int spp = loop_.spp * std::max(1, passes);
+    stats.setText("integrator", "path");
+    stats.set("time_s", seconds);
+    stats.set("spp", spp);
+    stats.setText("sampler", loop_.lowDiscrepancy ? "ldsampler" : "independent");
+    stats.set("samples", static_cast<double>(total_.samples));
+    reportAdaptiveSampling(stats, ctx_.options.adaptive, loop_.spp, total_.samples + total_.nanSamples,
+                           total_.adaptivePixels, total_.maxPixelSamples, static_cast<double>(film.width()) * film.height());
+    stats.set("nan_samples", static_cast<double>(total_.nanSamples));
+    stats.set("rays", rays);
+    stats.set("rays_per_s", seconds > 0.0 ? rays / seconds : 0.0);
+    stats.set("time_per_spp_s", seconds / spp);
+    if (stopped) stats.set("interrupted", 1.0);
+    return image;
+  }
+
+ private:
+  RenderLoopResult renderPathSamples(Film& film) const {
+    if (core_ == PathCore::Scalar)
+      return renderSamples(ctx_, film, loop_, [&](const SampleInput& in, Rng& rng, TileFilm&) {
+        return pathRadiance(ctx_, settings_, *in.cameraRay, rng, in.cameraHit);
+      });
+    // A tile row's samples (32 pixels × spp) are cut into waves of kWaveSize lanes: enough for full
+    // packets through most of a path's bounces, small enough that a wave's buffers stay in cache.
+    constexpr size_t kWaveSize = 256;
+    return renderSampleBatches(ctx_, film, loop_, [&](const SampleInput* in, Rng* rngs, size_t n, Color* out) {
+      thread_local PathWave wave;
+      for (size_t b = 0; b < n; b += kWaveSize) {
+        const size_t m = std::min(kWaveSize, n - b);
+        // A batch's camera rays and hits are consecutive elements of one array (render_loop.h).
+        pathRadianceBatch(ctx_, settings_, in[b].cameraRay, in[b].cameraHit, rngs + b, m, out + b, wave, query_);
+      }
+    });
+  }
+
+  const RenderContext& ctx_;
+  const IntegratorSettings& settings_;
+  const PathCore core_;
+  const BatchQuery query_;
+  const SteadyClock::time_point start_ = SteadyClock::now();
+  const uint64_t rays0_;
+  const CameraModel camera_;
+  RenderLoopSettings loop_;
+  RenderLoopResult total_;  // summed over the passes (its `interrupted` unused: finish is told)
+};
+
 class PathIntegrator final : public Integrator {
  public:
   PathIntegrator(const IntegratorSettings& s, PathCore core, BatchQuery query) : settings_(s), core_(core), query_(query) {
@@ -80,58 +157,11 @@ class PathIntegrator final : public Integrator {
     if (s.rrDepth < 1) throw Error("integrator path: rr_depth must be ≥ 1");
   }
   std::string name() const override { return "path"; }
-
-  Image render(const RenderContext& ctx, RenderStats& stats) override {
-    const auto start = std::chrono::steady_clock::now();
-    const uint64_t rays0 = ctx.accel.raysTraced();
-    Film film(ctx.scene.film);
-    const CameraModel camera(ctx.scene.camera, ctx.scene.film);
-    RenderLoopSettings loop;
-    loop.spp = ctx.options.spp > 0 ? ctx.options.spp : ctx.scene.sampleCount;
-    if (loop.spp <= 0) throw Error("sampler: sample_count must be positive");
-    loop.seed = ctx.scene.samplerSeed + ctx.options.seed;
-    loop.lowDiscrepancy = usesLowDiscrepancy(ctx);
-    loop.cameraRay = [&](const Vec2& filmPos) { return camera.generate(filmPos); };
-    loop.adaptive = ctx.options.adaptive;
-    loop.phase = "path";
-    const RenderLoopResult result = renderPathSamples(ctx, film, loop);
-    Image image = film.develop();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double rays = static_cast<double>(ctx.accel.raysTraced() - rays0);
-    stats.setText("integrator", "path");
-    stats.set("time_s", seconds);
-    stats.set("spp", loop.spp);
-    stats.setText("sampler", loop.lowDiscrepancy ? "ldsampler" : "independent");
-    stats.set("samples", static_cast<double>(result.samples));
-    reportAdaptiveSampling(stats, ctx.options.adaptive, loop.spp, result.samples + result.nanSamples,
-                           result.adaptivePixels, result.maxPixelSamples, static_cast<double>(film.width()) * film.height());
-    stats.set("nan_samples", static_cast<double>(result.nanSamples));
-    stats.set("rays", rays);
-    stats.set("rays_per_s", seconds > 0.0 ? rays / seconds : 0.0);
-    stats.set("time_per_spp_s", seconds / loop.spp);
-    if (result.interrupted) stats.set("interrupted", 1.0);
-    return image;
+  std::unique_ptr<PassRender> beginPasses(const RenderContext& ctx, RenderStats&) override {
+    return std::make_unique<PathPasses>(ctx, settings_, core_, query_);
   }
 
  private:
-  RenderLoopResult renderPathSamples(const RenderContext& ctx, Film& film, const RenderLoopSettings& loop) const {
-    if (core_ == PathCore::Scalar)
-      return renderSamples(ctx, film, loop, [&](const SampleInput& in, Rng& rng, TileFilm&) {
-        return pathRadiance(ctx, settings_, *in.cameraRay, rng, in.cameraHit);
-      });
-    // A tile row's samples (32 pixels × spp) are cut into waves of kWaveSize lanes: enough for full
-    // packets through most of a path's bounces, small enough that a wave's buffers stay in cache.
-    constexpr size_t kWaveSize = 256;
-    return renderSampleBatches(ctx, film, loop, [&](const SampleInput* in, Rng* rngs, size_t n, Color* out) {
-      thread_local PathWave wave;
-      for (size_t b = 0; b < n; b += kWaveSize) {
-        const size_t m = std::min(kWaveSize, n - b);
-        // A batch's camera rays and hits are consecutive elements of one array (render_loop.h).
-        pathRadianceBatch(ctx, settings_, in[b].cameraRay, in[b].cameraHit, rngs + b, m, out + b, wave, query_);
-      }
-    });
-  }
-
   IntegratorSettings settings_;
   PathCore core_;
   BatchQuery query_;

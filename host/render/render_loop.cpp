@@ -134,7 +134,7 @@ RenderLoopResult sampleLoop(const RenderContext& ctx, Film& film, const RenderLo
   const int spp = std::max(1, settings.spp);
   // Round 0: every pixel's spp samples; then (adaptive sampling) rounds for the pixels that need
   // more, over the tiles that hold any. A tile's pixels are written by its thread alone.
-  AdaptivePixels adaptive(width, film.height(), spp, settings.adaptive);
+  AdaptivePixels adaptive(width, film.height(), spp, settings.adaptive, settings.firstSample);
   const TileFn tileFn = [&](TileFilm& tile) {
     uint64_t tileSamples = 0, tileNans = 0;
     const bool batch = static_cast<bool>(settings.cameraRay);

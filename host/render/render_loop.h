@@ -20,6 +20,7 @@ struct RenderLoopSettings {
   bool lowDiscrepancy = false;  // pixel samples start with their padded Sobol dimensions
   std::function<Ray(const Vec2&)> cameraRay;  // set: trace camera rays in batches (SampleInput)
   AdaptiveSettings adaptive;  // off by default: every pixel takes spp samples
+  int firstSample = 0;        // sample indices [firstSample, firstSample + spp) (progressive passes)
   int tileSize = 32;
   std::string phase = "render";  // progress label
 };

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,9 @@ struct Scene {
   // core/low_discrepancy.h); Mitsuba's stratified/multijitter/orthogonal load as "ldsampler".
   std::string samplerType = "independent";
   IntegratorSettings integrator;
+  // The names the file (with its includes) declares with <default name="...">: scene parameters
+  // ($name) a -D define substitutes, whatever else the name means.
+  std::set<std::string> defaultNames;
 };
 
 }  // namespace rc

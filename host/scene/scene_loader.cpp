@@ -83,6 +83,7 @@ void Loader::substituteTree(const std::shared_ptr<XmlFile>& file, pugi::xml_node
       if (std::string(a.name()) != "name" && std::string(a.name()) != "value")
         throw LocatedError(whereOf(*file, node) + ": unsupported attribute '" + a.name() + "'");
     params_.emplace(name.value(), value.value());  // a -D define (already present) wins
+    scene_.defaultNames.insert(name.value());
   }
   for (pugi::xml_node child : node.children()) substituteTree(file, child, false);
 }

@@ -24,11 +24,11 @@ OneRecord recordAt(const Scene& scene, const Vec3& p, const RcacheParams& params
   LightSampler lights(scene);
   auto backend = makeScalarBackend();
   RenderOptions opt;
-  RenderContext ctx{scene, accel, lights, opt, backend.get()};
+  RenderContext ctx{scene, accel, lights, opt};
   BrdfTableSet tables;
   tables.build(scene.bsdfs);
   CameraModel cam(scene.camera, scene.film.width, scene.film.height);
-  CacheEngine engine(ctx, params, tables, cam, scene.integrator.maxDepth, 5, Vec3(-2), Vec3(3));
+  CacheEngine engine(ctx, *backend, params, tables, cam, scene.integrator.maxDepth, 5, Vec3(-2), Vec3(3));
   // A ray straight down onto the floor at p.
   Ray ray;
   ray.o = p + Vec3(0, 0.5f, 0);

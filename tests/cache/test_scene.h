@@ -102,12 +102,18 @@ inline RenderResult renderScene(const Scene& scene, const IntegratorSettings& se
   RenderOptions opt;
   opt.spp = spp;
   opt.seed = seed;
-  opt.cacheSave = cacheSave;
-  opt.cacheLoad = cacheLoad;
   opt.aovs = aovs;
   opt.adaptive = adaptive;
-  RenderContext ctx{scene, accel, lights, opt, backend.get()};
-  auto integ = settings.type == "path" ? makePathIntegrator(settings) : makeRcacheIntegrator(settings);
+  RenderContext ctx{scene, accel, lights, opt};
+  std::unique_ptr<Integrator> integ;
+  if (settings.type == "path") {
+    integ = makePathIntegrator(settings);
+  } else {
+    auto rcache = std::make_unique<RcacheIntegrator>(settings);
+    rcache->setBackend(backend.get());
+    rcache->setCacheFiles({cacheSave, cacheLoad, false});
+    integ = std::move(rcache);
+  }
   RenderResult r;
   r.image = integ->render(ctx, r.stats);
   return r;

@@ -45,6 +45,16 @@ same auto_keeps_direct direct auto_direct
 "$RC" "$DATA/tiny.xml" --quiet -t 2 -D rays=64 -o "$TMP/auto.exr" --stats "$TMP/auto.json" \
   && grep -q '"integrator": "rcache"' "$TMP/auto.json" && pass auto_path_file_uses_rcache || fail auto_path_file_uses_rcache "$(cat "$TMP/auto.json")"
 
+# -D naming another integrator's parameter: refused when nothing uses it, accepted when the file
+# declares the name with <default> — it is then the file's $name and substitutes (here max_depth).
+if "$RC" "$DATA/tiny.xml" --integrator path -D rays=2 -o "$TMP/nd.exr" --quiet 2> "$TMP/nd.err"; then fail other_param_refused "exit 0"
+elif grep -q "'rays' is an rcache parameter, but this render uses the path integrator" "$TMP/nd.err"; then pass other_param_refused
+else fail other_param_refused "$(cat "$TMP/nd.err")"; fi
+sed -e 's|<default name="spp" value="4"/>|&<default name="rays" value="4"/>|' \
+    -e 's|<integer name="max_depth" value="4"/>|<integer name="max_depth" value="$rays"/>|' "$DATA/tiny.xml" > "$TMP/declared.xml"
+render declared "$TMP/declared.xml" --integrator path -D rays=2 || fail declared_default_define "$(cat "$TMP/declared.err")"
+same declared_default_define_substitutes path_d2 declared
+
 # Errors: one line with the location, non-zero exit.
 with_integrator unknown "<integrator type=\"bdpt\"/>"
 if "$RC" "$TMP/unknown.xml" -o "$TMP/u.exr" --quiet 2> "$TMP/u.err"; then fail unknown_integrator "exit 0"

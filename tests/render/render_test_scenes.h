@@ -135,7 +135,7 @@ struct World {
     accel = std::make_unique<Accel>(scene);
     lights = std::make_unique<LightSampler>(scene);
   }
-  RenderContext context() const { return RenderContext{scene, *accel, *lights, {}, nullptr, nullptr, {}}; }
+  RenderContext context() const { return RenderContext{scene, *accel, *lights, {}, nullptr, {}}; }
   // The path tracer's image of this world with the given options (spp, seed, sampler, adaptive…).
   Image renderPath(const RenderOptions& options, RenderStats* statsOut = nullptr) const {
     RenderContext ctx = context();
