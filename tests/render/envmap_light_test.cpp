@@ -106,10 +106,10 @@ TEST(EnvmapLight, SampledPdfIsPdfAndIntegratesToOne) {
   const EnvmapLight env = sunSky();
   Rng rng(4);
   for (int i = 0; i < 2000; ++i) {
-    float pdf;
-    const Vec3 d = env.sample(Vec2(rng.nextFloat(), rng.nextFloat()), &pdf);
-    ASSERT_GT(pdf, 0.0f);
-    EXPECT_NEAR(pdf, env.pdf(d), 1e-4f * pdf);
+    const EnvmapLight::Sample s = env.sample(Vec2(rng.nextFloat(), rng.nextFloat()));
+    ASSERT_GT(s.value.pdf, 0.0f);
+    EXPECT_NEAR(s.value.pdf, env.pdf(s.dir), 1e-4f * s.value.pdf);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(s.value.radiance[k], env.eval(s.dir)[k], 1e-4f * (1.0f + env.eval(s.dir)[k]));
   }
   // ∫ pdf dω by stratified quadrature in (u, v): dω = 2π² sinθ du dv.
   double integral = 0.0;
@@ -140,9 +140,8 @@ TEST(EnvmapLight, LightSamplingEstimatesTheIntegralOfTheRadiance) {
   const int n = 200000;
   Rng rng(5);
   for (int i = 0; i < n; ++i) {
-    float pdf;
-    const Vec3 d = env.sample(Vec2(rng.nextFloat(), rng.nextFloat()), &pdf);
-    const Color f = env.eval(d) / pdf;
+    const EnvmapLight::Sample s = env.sample(Vec2(rng.nextFloat(), rng.nextFloat()));
+    const Color f = s.value.radiance / s.value.pdf;
     for (int k = 0; k < 3; ++k) {
       mean[k] += f[k];
       m2[k] += double(f[k]) * f[k];
