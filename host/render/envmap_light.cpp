@@ -7,9 +7,10 @@
 
 namespace rc {
 
-Vec3 envDirection(float u, float v) {
+Vec3 envDirection(float u, float v, float* sinTheta) {
   const float theta = v * kPi, phi = u * 2.0f * kPi;
   const float st = std::sin(theta);
+  if (sinTheta) *sinTheta = st;
   return Vec3(st * std::sin(phi), std::cos(theta), -st * std::cos(phi));
 }
 
@@ -113,8 +114,16 @@ EnvmapLight::Sample EnvmapLight::sample(Vec2 u) const {
   float uu = (static_cast<float>(i) + ux + 0.5f) / width_;
   if (uu >= 1.0f) uu -= 1.0f;
   const float vv = (static_cast<float>(j) + vy) / (height_ - 1);
-  const Vec3 d = glm::normalize(toWorld_ * envDirection(uu, vv));
-  return Sample{d, lookup(d)};
+  // Radiance and density at the sampled (u, v) and cell directly, as Mitsuba's envmap does: no
+  // round trip through the direction's atan2/acos (which agrees up to float rounding).
+  float sinTheta;
+  const Vec3 dLocal = envDirection(uu, vv, &sinTheta);
+  Sample s;
+  s.dir = glm::normalize(toWorld_ * dLocal);
+  if (!(sinTheta > 0.0f)) return s;  // pdf 0: the poles carry no solid angle
+  s.value.radiance = bilinear(Vec2(uu, vv));
+  s.value.pdf = static_cast<float>(cellPdfUv_[j * width_ + i] / (2.0 * kPiD * kPiD * sinTheta));
+  return s;
 }
 
 }  // namespace rc

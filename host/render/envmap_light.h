@@ -22,8 +22,9 @@
 
 namespace rc {
 
-// Mitsuba's lat-long mapping of a local direction and its inverse (u, v ∈ [0, 1]).
-Vec3 envDirection(float u, float v);
+// Mitsuba's lat-long mapping of a local direction and its inverse (u, v ∈ [0, 1]); *sinTheta
+// (optional) gets sin(πv).
+Vec3 envDirection(float u, float v, float* sinTheta = nullptr);
 Vec2 envUv(const Vec3& dirLocal);
 
 class EnvmapLight {
