@@ -134,6 +134,9 @@ struct Accel::Impl {
   std::vector<TriangleConstants> meshConstants;  // per mesh (empty for meshes not in the BVH)
   unsigned sphereGeom = RTC_INVALID_GEOMETRY_ID;
   SphereData sphereData{};
+  // Per sphere: whether its material reads the hit's uv (a textured factor, Bsdf::tint). The
+  // sphere's uv costs an atan2 and an acos, so hits on other spheres leave it zero.
+  std::vector<uint8_t> sphereUv;
   mutable RayCounter rays;
 
   std::mutex errorMutex;
@@ -205,6 +208,10 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
       if (!(s.radius > 0.0f) || !std::isfinite(s.radius))
         throw Error("sphere '" + s.name + "': radius must be positive and finite");
     im.sphereData.spheres = &scene.spheres;
+    for (const Sphere& s : scene.spheres) {
+      const bool known = s.bsdf >= 0 && s.bsdf < static_cast<int>(scene.bsdfs.size()) && scene.bsdfs[s.bsdf];
+      im.sphereUv.push_back(known && scene.bsdfs[s.bsdf]->tinted() ? 1 : 0);
+    }
     RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(g, static_cast<unsigned>(scene.spheres.size()));
     rtcSetGeometryUserData(g, &im.sphereData);
@@ -264,7 +271,7 @@ Hit triangleHit(const Mesh& mesh, const TriangleConstants& tc, int meshIndex, un
   return h;
 }
 
-Hit sphereHit(const Sphere& s, int index, const Ray& ray, float t) {
+Hit sphereHit(const Sphere& s, int index, const Ray& ray, float t, bool withUv) {
   Hit h;
   h.t = t;
   h.sphere = index;
@@ -276,8 +283,10 @@ Hit sphereHit(const Sphere& s, int index, const Ray& ray, float t) {
   n = len > 0.0f ? n / len : Vec3(0, 0, 1);
   h.p = s.center + s.radius * n;  // re-projected onto the sphere
   h.pError = kPointErrorUlps * kFloatEps * (maxAbs(s.center) + s.radius);
-  const float phi = std::atan2(n.y, n.x);
-  h.uv = Vec2((phi < 0.0f ? phi + 2.0f * kPi : phi) / (2.0f * kPi), std::acos(glm::clamp(n.z, -1.0f, 1.0f)) / kPi);
+  if (withUv) {
+    const float phi = std::atan2(n.y, n.x);
+    h.uv = Vec2((phi < 0.0f ? phi + 2.0f * kPi : phi) / (2.0f * kPi), std::acos(glm::clamp(n.z, -1.0f, 1.0f)) / kPi);
+  }
   h.dpdu = Vec3(-n.y, n.x, 0.0f) * (2.0f * kPi * s.radius);
   if (s.flipNormals) n = -n;
   h.ng = h.ns = n;
@@ -301,7 +310,7 @@ Hit Accel::hitOf(const Ray& ray, unsigned geomID, unsigned primID, float u, floa
   if (geomID == RTC_INVALID_GEOMETRY_ID) return Hit{};
   if (geomID == impl_->sphereGeom) {
     const int s = static_cast<int>(primID);
-    return sphereHit(scene_.spheres[s], s, ray, tfar);
+    return sphereHit(scene_.spheres[s], s, ray, tfar, impl_->sphereUv[s] != 0);
   }
   const int m = impl_->geomToMesh[geomID];
   return triangleHit(scene_.meshes[m], impl_->meshConstants[m], m, primID, u, v, tfar);

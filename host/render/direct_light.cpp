@@ -84,10 +84,10 @@ Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorl
     return Le * powerHeuristic(bsdfPdf, n * ctx.lights.pdf(next, from));
   }
   if (!ctx.lights.hasEnvironment()) return Color(0.0f);
-  const Color Le = ctx.lights.environment(dirWorld);
-  if (maxComponent(Le) <= 0.0f) return Color(0.0f);
-  if (delta) return Le;
-  return Le * powerHeuristic(bsdfPdf, n * ctx.lights.environmentPdf(dirWorld));
+  const LightSampler::EnvironmentLookup env = ctx.lights.environmentLookup(dirWorld);
+  if (maxComponent(env.radiance) <= 0.0f) return Color(0.0f);
+  if (delta) return env.radiance;
+  return env.radiance * powerHeuristic(bsdfPdf, n * env.pdf);
 }
 
 Color lightStrategyMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,

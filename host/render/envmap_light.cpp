@@ -7,9 +7,10 @@
 
 namespace rc {
 
-Vec3 envDirection(float u, float v) {
+Vec3 envDirection(float u, float v, float* sinTheta) {
   const float theta = v * kPi, phi = u * 2.0f * kPi;
   const float st = std::sin(theta);
+  if (sinTheta) *sinTheta = st;
   return Vec3(st * std::sin(phi), std::cos(theta), -st * std::cos(phi));
 }
 
@@ -63,15 +64,16 @@ EnvmapLight::EnvmapLight(int width, int height, const std::vector<Color>& pixels
   meanLuminance_ = solid > 0.0 ? total / solid : 0.0;
 }
 
-Color EnvmapLight::eval(const Vec3& dirWorld) const {
-  const Vec2 uv = envUv(glm::normalize(toLocal_ * dirWorld));
+Color EnvmapLight::eval(const Vec3& dirWorld) const { return bilinear(envUv(toLocal(dirWorld))); }
+
+Color EnvmapLight::bilinear(const Vec2& uv) const {
   const float fx = uv.x * width_ - 0.5f;  // texel x's centre at u = (x + 0.5) / W
   const float fy = uv.y * (height_ - 1);  // texel y's centre at v = y / (H − 1)
   const float x0f = std::floor(fx);
   const float tx = fx - x0f;
   int x0 = static_cast<int>(x0f) % width_;
   if (x0 < 0) x0 += width_;
-  const int x1 = (x0 + 1) % width_;
+  const int x1 = x0 + 1 < width_ ? x0 + 1 : 0;
   const int y0 = std::min(height_ - 2, std::max(0, static_cast<int>(std::floor(fy))));
   const float ty = glm::clamp(fy - y0, 0.0f, 1.0f);
   const Color top = (1.0f - tx) * texel(x0, y0) + tx * texel(x1, y0);
@@ -88,24 +90,40 @@ size_t EnvmapLight::cellOf(const Vec2& uv) const {
   return static_cast<size_t>(j) * width_ + i;
 }
 
-float EnvmapLight::pdf(const Vec3& dirWorld) const {
-  const Vec3 d = glm::normalize(toLocal_ * dirWorld);
+float EnvmapLight::pdfLocal(const Vec3& d, const Vec2& uv) const {
   const float sinTheta = std::sqrt(std::max(0.0f, d.x * d.x + d.z * d.z));
   if (!(sinTheta > 0.0f)) return 0.0f;
-  return static_cast<float>(cellPdfUv_[cellOf(envUv(d))] / (2.0 * kPiD * kPiD * sinTheta));
+  return static_cast<float>(cellPdfUv_[cellOf(uv)] / (2.0 * kPiD * kPiD * sinTheta));
 }
 
-Vec3 EnvmapLight::sample(Vec2 u, float* pdfOut) const {
+float EnvmapLight::pdf(const Vec3& dirWorld) const {
+  const Vec3 d = toLocal(dirWorld);
+  return pdfLocal(d, envUv(d));
+}
+
+EnvmapLight::Lookup EnvmapLight::lookup(const Vec3& dirWorld) const {
+  const Vec3 d = toLocal(dirWorld);
+  const Vec2 uv = envUv(d);
+  return Lookup{bilinear(uv), pdfLocal(d, uv)};
+}
+
+EnvmapLight::Sample EnvmapLight::sample(Vec2 u) const {
   float vy, ux;
   const size_t j = rows_.sample(u.y, &vy);
   const size_t i = columns_[j].sample(u.x, &ux);
   float uu = (static_cast<float>(i) + ux + 0.5f) / width_;
   if (uu >= 1.0f) uu -= 1.0f;
   const float vv = (static_cast<float>(j) + vy) / (height_ - 1);
-  const Vec3 dLocal = envDirection(uu, vv);
-  const Vec3 d = glm::normalize(toWorld_ * dLocal);
-  *pdfOut = pdf(d);
-  return d;
+  // Radiance and density at the sampled (u, v) and cell directly, as Mitsuba's envmap does: no
+  // round trip through the direction's atan2/acos (which agrees up to float rounding).
+  float sinTheta;
+  const Vec3 dLocal = envDirection(uu, vv, &sinTheta);
+  Sample s;
+  s.dir = glm::normalize(toWorld_ * dLocal);
+  if (!(sinTheta > 0.0f)) return s;  // pdf 0: the poles carry no solid angle
+  s.value.radiance = bilinear(Vec2(uu, vv));
+  s.value.pdf = static_cast<float>(cellPdfUv_[j * width_ + i] / (2.0 * kPiD * kPiD * sinTheta));
+  return s;
 }
 
 }  // namespace rc

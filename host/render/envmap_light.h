@@ -22,8 +22,9 @@
 
 namespace rc {
 
-// Mitsuba's lat-long mapping of a local direction and its inverse (u, v ∈ [0, 1]).
-Vec3 envDirection(float u, float v);
+// Mitsuba's lat-long mapping of a local direction and its inverse (u, v ∈ [0, 1]); *sinTheta
+// (optional) gets sin(πv).
+Vec3 envDirection(float u, float v, float* sinTheta = nullptr);
 Vec2 envUv(const Vec3& dirLocal);
 
 class EnvmapLight {
@@ -35,9 +36,19 @@ class EnvmapLight {
   Color eval(const Vec3& dirWorld) const;
   // Solid-angle density with which sample() returns dir.
   float pdf(const Vec3& dirWorld) const;
-  // A world direction drawn from the luminance-weighted density; *pdf gets its solid-angle density
-  // (0 when the map is black: then there is nothing to sample).
-  Vec3 sample(Vec2 u, float* pdf) const;
+  // eval() and pdf() of one direction, mapped to (u, v) once (the same numbers as the two calls).
+  struct Lookup {
+    Color radiance{0.0f};
+    float pdf = 0.0f;
+  };
+  Lookup lookup(const Vec3& dirWorld) const;
+  // A world direction drawn from the luminance-weighted density, with the radiance and density
+  // there (pdf 0 when the map is black: then there is nothing to sample).
+  struct Sample {
+    Vec3 dir{0, 0, 1};
+    Lookup value;
+  };
+  Sample sample(Vec2 u) const;
   // Luminance averaged over the sphere of directions (for emitter selection by power).
   double meanLuminance() const { return meanLuminance_; }
 
@@ -51,6 +62,9 @@ class EnvmapLight {
   double meanLuminance_ = 0.0;
 
   Color texel(int x, int y) const { return texels_[static_cast<size_t>(y) * width_ + x]; }
+  Vec3 toLocal(const Vec3& dirWorld) const { return glm::normalize(toLocal_ * dirWorld); }
+  Color bilinear(const Vec2& uv) const;
+  float pdfLocal(const Vec3& dLocal, const Vec2& uv) const;
   size_t cellOf(const Vec2& uv) const;
 };
 

@@ -48,9 +48,68 @@ struct LightSampler::Impl {
   Impl(const Scene& s, const std::vector<Emitter>& em) : scene(s), emitters(em) {}
 
   float selectProb(int e) const { return static_cast<float>(select.probability(static_cast<size_t>(e))); }
+
+  // Radiance and density (selection included) of all infinite emitters along dir, summed in entry
+  // order; entry `known` (an envmap just sampled toward dir) contributes *knownValue instead of
+  // being looked up again.
+  EnvironmentLookup environmentAt(const Vec3& dir, int known = -1, const EnvmapLight::Lookup* knownValue = nullptr) const {
+    EnvironmentLookup out;
+    for (int k : infinite) {
+      const Entry& e = entries[k];
+      if (e.type == EmitterType::Constant) {
+        out.radiance += emitters[e.emitter].radiance;
+        out.pdf += selectProb(k) * (1.0f / (4.0f * kPi));
+      } else {
+        const EnvmapLight::Lookup v = k == known ? *knownValue : e.envmap->lookup(dir);
+        out.radiance += v.radiance;
+        out.pdf += selectProb(k) * v.pdf;
+      }
+    }
+    return out;
+  }
 };
 
 LightSampler::LightSampler(const Scene& scene) : LightSampler(scene, scene.emitters) {}
+
+namespace {
+
+// Radius of the scene's bounding sphere: infinite lights' power is measured through a disc of it.
+double sceneRadius(const Scene& scene, const std::vector<Emitter>& emitters) {
+  Vec3 lo(INFINITY), hi(-INFINITY);
+  for (const Mesh& m : scene.meshes)
+    for (const Vec3& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  for (const Sphere& s : scene.spheres) lo = glm::min(lo, s.center - s.radius), hi = glm::max(hi, s.center + s.radius);
+  for (const Emitter& e : emitters)
+    if (e.type == EmitterType::Point) lo = glm::min(lo, e.position), hi = glm::max(hi, e.position);
+  return lo.x <= hi.x ? std::max(1e-6, 0.5 * static_cast<double>(glm::length(hi - lo))) : 1.0;
+}
+
+// An area emitter on a mesh: triangles by area, their normals, its bounding sphere. Empty area →
+// no entry (std::nullopt).
+std::optional<Entry> meshEntry(const Mesh& mesh, int meshIndex) {
+  Entry e;
+  e.type = EmitterType::Area;
+  e.emitter = mesh.emitter;
+  e.mesh = meshIndex;
+  std::vector<double> areas(mesh.triangles.size());
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const glm::uvec3 tri = mesh.triangles[t];
+    const glm::dvec3 p0(mesh.positions[tri.x]), p1(mesh.positions[tri.y]), p2(mesh.positions[tri.z]);
+    areas[t] = 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
+    e.area += areas[t];
+    e.normals.push_back(orientedFaceNormal(mesh, t));
+  }
+  e.triangles = Distribution1D(areas);
+  if (!(e.area > 0.0)) return std::nullopt;
+  Vec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::uvec3& tri : mesh.triangles)
+    for (int k = 0; k < 3; ++k) lo = glm::min(lo, mesh.positions[tri[k]]), hi = glm::max(hi, mesh.positions[tri[k]]);
+  e.boundCenter = 0.5f * (lo + hi);
+  e.boundRadius = 0.5f * glm::length(hi - lo);
+  return e;
+}
+
+}  // namespace
 
 LightSampler::LightSampler(const Scene& scene, const std::vector<Emitter>& emitters)
     : impl_(std::make_unique<Impl>(scene, emitters)) {
@@ -58,50 +117,21 @@ LightSampler::LightSampler(const Scene& scene, const std::vector<Emitter>& emitt
   Impl& im = *impl_;
   im.meshEntry.assign(scene.meshes.size(), -1);
   im.sphereEntry.assign(scene.spheres.size(), -1);
-
-  // Scene bounding sphere: infinite lights' power is measured through a disc of its radius.
-  Vec3 lo(INFINITY), hi(-INFINITY);
-  for (const Mesh& m : scene.meshes)
-    for (const Vec3& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  for (const Sphere& s : scene.spheres) lo = glm::min(lo, s.center - s.radius), hi = glm::max(hi, s.center + s.radius);
-  for (const Emitter& e : emitters)
-    if (e.type == EmitterType::Point) lo = glm::min(lo, e.position), hi = glm::max(hi, e.position);
-  const double sceneRadius = lo.x <= hi.x ? std::max(1e-6, 0.5 * static_cast<double>(glm::length(hi - lo))) : 1.0;
-  const double discArea = kPiD * sceneRadius * sceneRadius;
-
   std::vector<double> power;
   auto addEntry = [&](Entry&& e, double p) {
     im.entries.push_back(std::move(e));
     power.push_back(p);
     return static_cast<int>(im.entries.size() - 1);
   };
-
   // Area emitters: found from the shapes that carry them.
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
     if (mesh.emitter < 0 || mesh.triangles.empty()) continue;
     if (mesh.emitter >= static_cast<int>(emitters.size())) throw Error("mesh '" + mesh.name + "': bad emitter index");
-    Entry e;
-    e.type = EmitterType::Area;
-    e.emitter = mesh.emitter;
-    e.mesh = static_cast<int>(m);
-    std::vector<double> areas(mesh.triangles.size());
-    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-      const glm::uvec3 tri = mesh.triangles[t];
-      const glm::dvec3 p0(mesh.positions[tri.x]), p1(mesh.positions[tri.y]), p2(mesh.positions[tri.z]);
-      areas[t] = 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
-      e.area += areas[t];
-      e.normals.push_back(orientedFaceNormal(mesh, t));
-    }
-    e.triangles = Distribution1D(areas);
-    if (!(e.area > 0.0)) continue;
-    Vec3 lo(INFINITY), hi(-INFINITY);
-    for (const glm::uvec3& tri : mesh.triangles)
-      for (int k = 0; k < 3; ++k) lo = glm::min(lo, mesh.positions[tri[k]]), hi = glm::max(hi, mesh.positions[tri[k]]);
-    e.boundCenter = 0.5f * (lo + hi);
-    e.boundRadius = 0.5f * glm::length(hi - lo);
-    const double p = kPiD * e.area * luminance(emitters[mesh.emitter].radiance);
-    im.meshEntry[m] = addEntry(std::move(e), p);
+    std::optional<Entry> e = meshEntry(mesh, static_cast<int>(m));
+    if (!e) continue;
+    const double p = kPiD * e->area * luminance(emitters[mesh.emitter].radiance);
+    im.meshEntry[m] = addEntry(std::move(*e), p);
   }
   for (size_t s = 0; s < scene.spheres.size(); ++s) {
     const Sphere& sp = scene.spheres[s];
@@ -116,34 +146,24 @@ LightSampler::LightSampler(const Scene& scene, const std::vector<Emitter>& emitt
     const double area = 4.0 * kPiD * sp.radius * sp.radius;
     im.sphereEntry[s] = addEntry(std::move(e), kPiD * area * luminance(emitters[sp.emitter].radiance));
   }
-
+  const double r = sceneRadius(scene, emitters), discArea = kPiD * r * r;
   for (size_t i = 0; i < emitters.size(); ++i) {
     const Emitter& em = emitters[i];
     Entry e;
     e.type = em.type;
     e.emitter = static_cast<int>(i);
-    switch (em.type) {
-      case EmitterType::Area:
-        break;  // handled with its shape
-      case EmitterType::Point:
-        addEntry(std::move(e), 4.0 * kPiD * luminance(em.intensity));
-        break;
-      case EmitterType::Directional:
-        addEntry(std::move(e), discArea * luminance(em.irradiance));
-        break;
-      case EmitterType::Constant:
-        im.infinite.push_back(addEntry(std::move(e), discArea * kPiD * luminance(em.radiance)));
-        break;
-      case EmitterType::Envmap: {
-        if (em.envWidth <= 0 || em.envHeight <= 0 ||
-            em.envPixels.size() != static_cast<size_t>(em.envWidth) * em.envHeight)
-          throw Error("envmap '" + em.filename + "': image not loaded");
-        e.envmap = std::make_shared<const EnvmapLight>(em.envWidth, em.envHeight, em.envPixels, em.scale, Mat3(em.toWorld));
-        const double meanLum = e.envmap->meanLuminance();
-        im.infinite.push_back(addEntry(std::move(e), discArea * kPiD * meanLum));
-        break;
-      }
-    }
+    if (em.type == EmitterType::Point) addEntry(std::move(e), 4.0 * kPiD * luminance(em.intensity));
+    else if (em.type == EmitterType::Directional) addEntry(std::move(e), discArea * luminance(em.irradiance));
+    else if (em.type == EmitterType::Constant)
+      im.infinite.push_back(addEntry(std::move(e), discArea * kPiD * luminance(em.radiance)));
+    else if (em.type == EmitterType::Envmap) {
+      if (em.envWidth <= 0 || em.envHeight <= 0 ||
+          em.envPixels.size() != static_cast<size_t>(em.envWidth) * em.envHeight)
+        throw Error("envmap '" + em.filename + "': image not loaded");
+      e.envmap = std::make_shared<const EnvmapLight>(em.envWidth, em.envHeight, em.envPixels, em.scale, Mat3(em.toWorld));
+      const double meanLum = e.envmap->meanLuminance();
+      im.infinite.push_back(addEntry(std::move(e), discArea * kPiD * meanLum));
+    }  // area emitters are handled with their shapes
   }
   if (!im.entries.empty()) im.select = Distribution1D(power);
 }
@@ -173,6 +193,103 @@ bool LightSampler::empty() const { return impl_->entries.empty(); }
 size_t LightSampler::emitterCount() const { return impl_->entries.size(); }
 bool LightSampler::hasEnvironment() const { return !impl_->infinite.empty(); }
 
+namespace {
+
+// Area light at point q with normal n, sampled with solid-angle density pdfSolidNoSel at p (emitter
+// selection pSel not included): the light sample, empty when it carries nothing.
+std::optional<LightSample> areaSample(const Vec3& p, const Vec3& q, const Vec3& n, float pdfSolidNoSel, float pSel,
+                                      const Color& radiance) {
+  LightSample ls;
+  const Vec3 toLight = q - p;
+  const float dist2 = glm::dot(toLight, toLight);
+  if (!(dist2 > 0.0f)) return std::nullopt;
+  const float dist = std::sqrt(dist2);
+  ls.wi = toLight / dist;
+  ls.dist = dist;
+  if (!(glm::dot(n, -ls.wi) > 0.0f)) return std::nullopt;  // emits toward +n only
+  ls.pdf = pdfSolidNoSel * pSel;
+  if (!(ls.pdf > 0.0f) || !std::isfinite(ls.pdf)) return std::nullopt;
+  ls.radiance = radiance / ls.pdf;
+  ls.lightPoint = q;
+  ls.lightNormal = n;
+  return ls;
+}
+
+// A uniform point on a mesh emitter's area (triangle by area).
+std::optional<LightSample> sampleMesh(const Mesh& mesh, const Entry& e, const Vec3& p, Vec2 u, float pSel,
+                                      const Color& radiance) {
+  float ux;
+  const size_t t = e.triangles.sample(u.x, &ux);
+  const glm::uvec3 tri = mesh.triangles[t];
+  const float su = std::sqrt(ux);
+  const float b0 = 1.0f - su, b1 = u.y * su;
+  const Vec3 q = b0 * mesh.positions[tri.x] + b1 * mesh.positions[tri.y] + (1.0f - b0 - b1) * mesh.positions[tri.z];
+  const Vec3 n = e.normals[t];
+  const Vec3 toLight = q - p;
+  const float dist2 = glm::dot(toLight, toLight);
+  const float cosL = std::fabs(glm::dot(n, toLight)) / std::sqrt(dist2);
+  return areaSample(p, q, n, static_cast<float>(dist2 / (e.area * cosL)), pSel, radiance);
+}
+
+// A sphere emitter: uniform in the cone of directions that see it from outside, uniform on its
+// area from inside (or on) it.
+std::optional<LightSample> sampleSphere(const Sphere& s, const Vec3& p, Vec2 u, float pSel, const Color& radiance) {
+  const Vec3 toCenter = s.center - p;
+  const float dc2 = glm::dot(toCenter, toCenter);
+  const float r2 = s.radius * s.radius;
+  if (dc2 > r2 * 1.0001f) {
+    const float dc = std::sqrt(dc2);
+    const float sin2Max = r2 / dc2;
+    const float cosMax = std::sqrt(std::max(0.0f, 1.0f - sin2Max));
+    const float oneMinusCosMax = sin2Max / (1.0f + cosMax);  // no cancellation for small cones
+    const float cosT = 1.0f - u.x * oneMinusCosMax;
+    const float sinT = std::sqrt(std::max(0.0f, 1.0f - cosT * cosT));
+    const float phi = 2.0f * kPi * u.y;
+    const Frame f = Frame::fromNormal(toCenter / dc);
+    const Vec3 w = f.toWorld(Vec3(sinT * std::cos(phi), sinT * std::sin(phi), cosT));
+    // Distance to the near intersection along w (clamped at the silhouette).
+    const float ds = dc * cosT - std::sqrt(std::max(0.0f, r2 - dc2 * sinT * sinT));
+    const Vec3 q = p + ds * w;
+    Vec3 n = glm::normalize(q - s.center);
+    if (s.flipNormals) n = -n;
+    return areaSample(p, q, n, 1.0f / (2.0f * kPi * oneMinusCosMax), pSel, radiance);
+  }
+  const Vec3 dirOut = uniformSphere(u);
+  const Vec3 q = s.center + s.radius * dirOut;
+  const Vec3 n = s.flipNormals ? -dirOut : dirOut;
+  const Vec3 toLight = q - p;
+  const float dist2 = glm::dot(toLight, toLight);
+  const float cosL = std::fabs(glm::dot(n, toLight)) / std::sqrt(dist2);
+  return areaSample(p, q, n, dist2 / (4.0f * kPi * r2 * cosL), pSel, radiance);
+}
+
+std::optional<LightSample> samplePoint(const Emitter& em, const Vec3& p, float pSel) {
+  LightSample ls;
+  const Vec3 toLight = em.position - p;
+  const float dist2 = glm::dot(toLight, toLight);
+  if (!(dist2 > 0.0f)) return std::nullopt;
+  ls.dist = std::sqrt(dist2);
+  ls.wi = toLight / ls.dist;
+  ls.delta = true;
+  ls.pdf = 0.0f;
+  ls.radiance = em.intensity / (dist2 * pSel);
+  ls.lightPoint = em.position;
+  return ls;
+}
+
+// An infinite light's sample toward wi, weighted by the density summed over all infinite
+// emitters (MIS-consistent with environmentPdf).
+std::optional<LightSample> infiniteSample(const Vec3& wi, const LightSampler::EnvironmentLookup& env) {
+  if (!(env.pdf > 0.0f) || !std::isfinite(env.pdf)) return std::nullopt;
+  LightSample ls;
+  ls.wi = wi;
+  ls.pdf = env.pdf;
+  ls.radiance = env.radiance / env.pdf;
+  return ls;
+}
+
+}  // namespace
+
 std::optional<LightSample> LightSampler::sample(const Vec3& p, Vec2 u, float uLight) const {
   const Impl& im = *impl_;
   if (im.entries.empty()) return std::nullopt;
@@ -181,101 +298,27 @@ std::optional<LightSample> LightSampler::sample(const Vec3& p, Vec2 u, float uLi
   if (!(pSel > 0.0f)) return std::nullopt;
   const Entry& e = im.entries[k];
   const Emitter& em = im.emitters[e.emitter];
-  LightSample ls;
-
-  // Area light at point q with normal n and area pdf pArea → solid angle at p.
-  auto finishArea = [&](const Vec3& q, const Vec3& n, float pdfSolidNoSel) -> std::optional<LightSample> {
-    const Vec3 toLight = q - p;
-    const float dist2 = glm::dot(toLight, toLight);
-    if (!(dist2 > 0.0f)) return std::nullopt;
-    const float dist = std::sqrt(dist2);
-    ls.wi = toLight / dist;
-    ls.dist = dist;
-    if (!(glm::dot(n, -ls.wi) > 0.0f)) return std::nullopt;  // emits toward +n only
-    ls.pdf = pdfSolidNoSel * pSel;
-    if (!(ls.pdf > 0.0f) || !std::isfinite(ls.pdf)) return std::nullopt;
-    ls.radiance = em.radiance / ls.pdf;
-    ls.lightPoint = q;
-    ls.lightNormal = n;
-    return ls;
-  };
-
   switch (e.type) {
-    case EmitterType::Area: {
-      if (e.mesh >= 0) {
-        const Mesh& mesh = im.scene.meshes[e.mesh];
-        float ux;
-        const size_t t = e.triangles.sample(u.x, &ux);
-        const glm::uvec3 tri = mesh.triangles[t];
-        const float su = std::sqrt(ux);
-        const float b0 = 1.0f - su, b1 = u.y * su;
-        const Vec3 q = b0 * mesh.positions[tri.x] + b1 * mesh.positions[tri.y] + (1.0f - b0 - b1) * mesh.positions[tri.z];
-        const Vec3 n = e.normals[t];
-        const Vec3 toLight = q - p;
-        const float dist2 = glm::dot(toLight, toLight);
-        const float cosL = std::fabs(glm::dot(n, toLight)) / std::sqrt(dist2);
-        return finishArea(q, n, static_cast<float>(dist2 / (e.area * cosL)));
-      }
-      const Sphere& s = im.scene.spheres[e.sphere];
-      const Vec3 toCenter = s.center - p;
-      const float dc2 = glm::dot(toCenter, toCenter);
-      const float r2 = s.radius * s.radius;
-      if (dc2 > r2 * 1.0001f) {
-        // Outside: uniform in the cone of directions that see the sphere.
-        const float dc = std::sqrt(dc2);
-        const float sin2Max = r2 / dc2;
-        const float cosMax = std::sqrt(std::max(0.0f, 1.0f - sin2Max));
-        const float oneMinusCosMax = sin2Max / (1.0f + cosMax);  // no cancellation for small cones
-        const float cosT = 1.0f - u.x * oneMinusCosMax;
-        const float sinT = std::sqrt(std::max(0.0f, 1.0f - cosT * cosT));
-        const float phi = 2.0f * kPi * u.y;
-        const Frame f = Frame::fromNormal(toCenter / dc);
-        const Vec3 w = f.toWorld(Vec3(sinT * std::cos(phi), sinT * std::sin(phi), cosT));
-        // Distance to the near intersection along w (clamped at the silhouette).
-        const float ds = dc * cosT - std::sqrt(std::max(0.0f, r2 - dc2 * sinT * sinT));
-        const Vec3 q = p + ds * w;
-        Vec3 n = glm::normalize(q - s.center);
-        if (s.flipNormals) n = -n;
-        return finishArea(q, n, 1.0f / (2.0f * kPi * oneMinusCosMax));
-      }
-      // Inside (or on) the sphere: uniform on its area.
-      const Vec3 dirOut = uniformSphere(u);
-      const Vec3 q = s.center + s.radius * dirOut;
-      const Vec3 n = s.flipNormals ? -dirOut : dirOut;
-      const Vec3 toLight = q - p;
-      const float dist2 = glm::dot(toLight, toLight);
-      const float cosL = std::fabs(glm::dot(n, toLight)) / std::sqrt(dist2);
-      return finishArea(q, n, dist2 / (4.0f * kPi * r2 * cosL));
-    }
-    case EmitterType::Point: {
-      const Vec3 toLight = em.position - p;
-      const float dist2 = glm::dot(toLight, toLight);
-      if (!(dist2 > 0.0f)) return std::nullopt;
-      ls.dist = std::sqrt(dist2);
-      ls.wi = toLight / ls.dist;
-      ls.delta = true;
-      ls.pdf = 0.0f;
-      ls.radiance = em.intensity / (dist2 * pSel);
-      ls.lightPoint = em.position;
-      return ls;
-    }
-    case EmitterType::Directional:
+    case EmitterType::Area:
+      if (e.mesh >= 0) return sampleMesh(im.scene.meshes[e.mesh], e, p, u, pSel, em.radiance);
+      return sampleSphere(im.scene.spheres[e.sphere], p, u, pSel, em.radiance);
+    case EmitterType::Point:
+      return samplePoint(em, p, pSel);
+    case EmitterType::Directional: {
+      LightSample ls;
       ls.wi = -glm::normalize(em.direction);
       ls.delta = true;
       ls.radiance = em.irradiance / pSel;
       return ls;
-    case EmitterType::Constant:
-      ls.wi = uniformSphere(u);
-      ls.pdf = environmentPdf(ls.wi);  // MIS-consistent: all infinite emitters' densities summed
-      ls.radiance = environment(ls.wi) / ls.pdf;
-      return ls.pdf > 0.0f ? std::optional<LightSample>(ls) : std::nullopt;
+    }
+    case EmitterType::Constant: {
+      const Vec3 wi = uniformSphere(u);
+      return infiniteSample(wi, im.environmentAt(wi));
+    }
     case EmitterType::Envmap: {
-      float pdfEnv;
-      ls.wi = e.envmap->sample(u, &pdfEnv);
-      if (!(pdfEnv > 0.0f)) return std::nullopt;
-      ls.pdf = environmentPdf(ls.wi);  // MIS-consistent: all infinite emitters' densities summed
-      ls.radiance = environment(ls.wi) / ls.pdf;
-      return ls.pdf > 0.0f && std::isfinite(ls.pdf) ? std::optional<LightSample>(ls) : std::nullopt;
+      const EnvmapLight::Sample s = e.envmap->sample(u);
+      if (!(s.value.pdf > 0.0f)) return std::nullopt;
+      return infiniteSample(s.dir, im.environmentAt(s.dir, k, &s.value));
     }
   }
   return std::nullopt;
@@ -307,26 +350,10 @@ float LightSampler::pdf(const Hit& lightHit, const Vec3& from) const {
   return pSel * dist2 / (4.0f * kPi * r2 * cosL);
 }
 
-Color LightSampler::environment(const Vec3& dir) const {
-  const Impl& im = *impl_;
-  Color L(0.0f);
-  for (int k : im.infinite) {
-    const Entry& e = im.entries[k];
-    if (e.type == EmitterType::Constant) L += im.emitters[e.emitter].radiance;
-    else L += e.envmap->eval(dir);
-  }
-  return L;
-}
-
-float LightSampler::environmentPdf(const Vec3& dir) const {
-  const Impl& im = *impl_;
-  float pdf = 0.0f;
-  for (int k : im.infinite) {
-    const Entry& e = im.entries[k];
-    const float p = e.type == EmitterType::Constant ? 1.0f / (4.0f * kPi) : e.envmap->pdf(dir);
-    pdf += im.selectProb(k) * p;
-  }
-  return pdf;
+Color LightSampler::environment(const Vec3& dir) const { return impl_->environmentAt(dir).radiance; }
+float LightSampler::environmentPdf(const Vec3& dir) const { return impl_->environmentAt(dir).pdf; }
+LightSampler::EnvironmentLookup LightSampler::environmentLookup(const Vec3& dir) const {
+  return impl_->environmentAt(dir);
 }
 
 }  // namespace rc

@@ -45,6 +45,12 @@ class LightSampler {
   Color environment(const Vec3& dir) const;
   // Solid-angle pdf (selection included) with which sample() returns direction dir from an infinite emitter.
   float environmentPdf(const Vec3& dir) const;
+  // Both at once (each envmap's image looked up once): the same numbers as the two calls.
+  struct EnvironmentLookup {
+    Color radiance{0.0f};
+    float pdf = 0.0f;
+  };
+  EnvironmentLookup environmentLookup(const Vec3& dir) const;
   bool hasEnvironment() const;
   // An upper bound of the solid angle the emitters subtend from p (the area emitters' bounding
   // spheres; 4π with an infinite emitter, from inside a bound, or with more than 16 emitters). Lets a caller skip the BSDF

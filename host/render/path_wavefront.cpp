@@ -46,18 +46,8 @@ void sortByOctant(PathWave& w, size_t live) {
   std::swap(w.active, w.next);
 }
 
-}  // namespace
-
-void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& settings, const Ray* cameraRays,
-                       const Hit* cameraHits, Rng* rngs, size_t count, Color* out, PathWave& w, BatchQuery query) {
-  const Scene& scene = ctx.scene;
-  const int maxDepth = settings.maxDepth;
-  if (maxDepth == 0) {
-    std::fill(out, out + count, Color(0.0f));
-    return;
-  }
-  prepare(w, count);
-  size_t live = count;
+// The lanes' state at their camera rays.
+void startLanes(PathWave& w, const Ray* cameraRays, size_t count) {
   for (size_t i = 0; i < count; ++i) {
     w.radiance[i] = Color(0.0f);
     w.throughput[i] = Color(1.0f);
@@ -68,7 +58,94 @@ void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& setti
     w.rays[i] = cameraRays[i];
     w.active[i] = static_cast<uint32_t>(i);
   }
+}
 
+// One bounce's shading, all in pathRadiance's order of draws and additions.
+class BounceShader {
+ public:
+  BounceShader(const RenderContext& ctx, const IntegratorSettings& settings, Rng* rngs, PathWave& w, int depth)
+      : ctx_(ctx), settings_(settings), rngs_(rngs), w_(w), depth_(depth) {}
+
+  size_t shadows = 0, survivors = 0;
+
+  // Lane i, whose segment w.rays[i] found `hit`: adds the emission the segment found, queues the
+  // vertex's shadow ray, and queues the lane for the next bounce unless its path ends here.
+  void shade(uint32_t i, const Hit& hit) {
+    const Ray& ray = w_.rays[i];
+    Color& throughput = w_.throughput[i];
+    // Emission found by this segment: full weight for the camera ray, MIS against light sampling after.
+    if (depth_ == 0) {
+      if (!settings_.hideEmitters)
+        w_.radiance[i] += throughput * (hit.valid() ? emitted(ctx_.scene, hit, -ray.d) : ctx_.lights.environment(ray.d));
+    } else {
+      w_.radiance[i] += throughput * emitterMis(ctx_, w_.prevP[i], ray.d, hit, w_.prevPdf[i], w_.prevDelta[i] != 0);
+    }
+    if (!hit.valid()) return;
+    // Mitsuba: a vertex may extend the path only while the path has fewer than max_depth segments.
+    if (settings_.maxDepth >= 0 && depth_ + 1 >= settings_.maxDepth) return;
+    const std::vector<BsdfPtr>& bsdfs = ctx_.scene.bsdfs;
+    if (hit.bsdf < 0 || hit.bsdf >= static_cast<int>(bsdfs.size()) || !bsdfs[hit.bsdf]) return;
+    const Bsdf& bsdf = *bsdfs[hit.bsdf];
+    const Frame frame = hit.frame();
+    const Vec3 wo = frame.toLocal(-ray.d);
+    // A textured factor scales everything this vertex reflects (Bsdf::tint), not its emission.
+    if (bsdf.tinted()) throughput *= bsdf.tint(hit.uv, wo);
+    Rng& rng = rngs_[i];
+    // Light sampling: its shadow ray joins the bounce's occlusion query; the value is added after.
+    if (std::optional<UnshadowedLight> light = lightSampleUnshadowed(ctx_, hit, frame, wo, bsdf, rng, 1)) {
+      w_.shadowRays[shadows] = light->shadow;
+      w_.shadowValue[shadows] = throughput * light->value;
+      w_.shadowLane[shadows] = i;
+      ++shadows;
+    }
+    if (extend(i, hit, frame, wo, bsdf, rng)) w_.next[survivors++] = i;
+  }
+
+ private:
+  const RenderContext& ctx_;
+  const IntegratorSettings& settings_;
+  Rng* rngs_;
+  PathWave& w_;
+  const int depth_;
+
+  // BSDF sampling and Russian roulette: true when the path continues along the new w.rays[i].
+  bool extend(uint32_t i, const Hit& hit, const Frame& frame, const Vec3& wo, const Bsdf& bsdf, Rng& rng) {
+    Color& throughput = w_.throughput[i];
+    const Vec2 u = rng.next2D();
+    const float uLobe = rng.nextFloat();
+    const std::optional<BsdfSample> bs = bsdf.sample(wo, uLobe, u);
+    if (!bs) return false;
+    throughput *= bs->weight;
+    w_.eta[i] *= bs->eta;
+    if (!(maxComponent(throughput) > 0.0f) || !isFinite(throughput)) return false;
+    const Vec3 dir = frame.toWorld(bs->wi);
+    w_.prevP[i] = hit.p;
+    w_.prevPdf[i] = bs->pdf;
+    w_.prevDelta[i] = (bs->lobe & kLobeDelta) != 0;
+    w_.rays[i] = Accel::spawnRay(hit, dir);
+    // Russian roulette (Mitsuba 3): once depth ≥ rr_depth, continue with q = min(max(β)·η², 0.95).
+    const int segments = depth_ + 1;
+    const float uRr = rng.nextFloat();
+    if (segments >= settings_.rrDepth) {
+      const float q = std::min(maxComponent(throughput) * w_.eta[i] * w_.eta[i], 0.95f);
+      if (!(uRr < q)) return false;
+      throughput /= q;
+    }
+    return true;
+  }
+};
+
+}  // namespace
+
+void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& settings, const Ray* cameraRays,
+                       const Hit* cameraHits, Rng* rngs, size_t count, Color* out, PathWave& w, BatchQuery query) {
+  if (settings.maxDepth == 0) {
+    std::fill(out, out + count, Color(0.0f));
+    return;
+  }
+  prepare(w, count);
+  startLanes(w, cameraRays, count);
+  size_t live = count;
   for (int depth = 0; live > 0; ++depth) {
     // This bounce's segments: the camera rays' hits are given; later ones go to the BVH together.
     const Hit* hits = cameraHits;
@@ -78,71 +155,17 @@ void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& setti
       ctx.accel.intersectBatch(w.waveRays.data(), w.waveHits.data(), live, query);
       hits = w.waveHits.data();
     }
-    size_t shadows = 0, survivors = 0;
-    for (size_t k = 0; k < live; ++k) {
-      const uint32_t i = w.active[k];
-      const Hit& hit = hits[depth == 0 ? i : k];
-      const Ray& ray = w.rays[i];
-      Color& L = w.radiance[i];
-      Color& throughput = w.throughput[i];
-      // Emission found by this segment: full weight for the camera ray, MIS against light sampling after.
-      if (depth == 0) {
-        if (!settings.hideEmitters)
-          L += throughput * (hit.valid() ? emitted(scene, hit, -ray.d) : ctx.lights.environment(ray.d));
-      } else {
-        L += throughput * emitterMis(ctx, w.prevP[i], ray.d, hit, w.prevPdf[i], w.prevDelta[i] != 0);
-      }
-      if (!hit.valid()) continue;
-      // Mitsuba: a vertex may extend the path only while the path has fewer than max_depth segments.
-      if (maxDepth >= 0 && depth + 1 >= maxDepth) continue;
-      if (hit.bsdf < 0 || hit.bsdf >= static_cast<int>(scene.bsdfs.size()) || !scene.bsdfs[hit.bsdf]) continue;
-      const Bsdf& bsdf = *scene.bsdfs[hit.bsdf];
-      const Frame frame = hit.frame();
-      const Vec3 wo = frame.toLocal(-ray.d);
-      // A textured factor scales everything this vertex reflects (Bsdf::tint), not its emission.
-      if (bsdf.tinted()) throughput *= bsdf.tint(hit.uv, wo);
-      Rng& rng = rngs[i];
-
-      // Light sampling: its shadow ray joins the bounce's occlusion query; the value is added after.
-      if (std::optional<UnshadowedLight> light = lightSampleUnshadowed(ctx, hit, frame, wo, bsdf, rng, 1)) {
-        w.shadowRays[shadows] = light->shadow;
-        w.shadowValue[shadows] = throughput * light->value;
-        w.shadowLane[shadows] = i;
-        ++shadows;
-      }
-
-      const Vec2 u = rng.next2D();
-      const float uLobe = rng.nextFloat();
-      const std::optional<BsdfSample> bs = bsdf.sample(wo, uLobe, u);
-      if (!bs) continue;
-      throughput *= bs->weight;
-      w.eta[i] *= bs->eta;
-      if (!(maxComponent(throughput) > 0.0f) || !isFinite(throughput)) continue;
-      const Vec3 dir = frame.toWorld(bs->wi);
-      w.prevP[i] = hit.p;
-      w.prevPdf[i] = bs->pdf;
-      w.prevDelta[i] = (bs->lobe & kLobeDelta) != 0;
-      w.rays[i] = Accel::spawnRay(hit, dir);
-
-      // Russian roulette (Mitsuba 3): once depth ≥ rr_depth, continue with q = min(max(β)·η², 0.95).
-      const int segments = depth + 1;
-      const float uRr = rng.nextFloat();
-      if (segments >= settings.rrDepth) {
-        const float q = std::min(maxComponent(throughput) * w.eta[i] * w.eta[i], 0.95f);
-        if (!(uRr < q)) continue;
-        throughput /= q;
-      }
-      w.next[survivors++] = i;
-    }
+    BounceShader shader(ctx, settings, rngs, w, depth);
+    for (size_t k = 0; k < live; ++k) shader.shade(w.active[k], hits[depth == 0 ? w.active[k] : k]);
     // Each lane has at most one shadow ray per bounce, added before the next bounce's emission:
     // the same order of additions as pathRadiance.
-    if (shadows > 0) {
-      ctx.accel.occludedBatch(w.shadowRays.data(), w.blocked.data(), shadows, query);
-      for (size_t s = 0; s < shadows; ++s)
+    if (shader.shadows > 0) {
+      ctx.accel.occludedBatch(w.shadowRays.data(), w.blocked.data(), shader.shadows, query);
+      for (size_t s = 0; s < shader.shadows; ++s)
         if (!w.blocked[s]) w.radiance[w.shadowLane[s]] += w.shadowValue[s];
     }
     std::swap(w.active, w.next);
-    live = survivors;
+    live = shader.survivors;
   }
   std::copy(w.radiance.begin(), w.radiance.begin() + count, out);
 }
