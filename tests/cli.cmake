@@ -16,3 +16,6 @@ set_tests_properties(cli_walk PROPERTIES LABELS cli TIMEOUT 120)
 # The Dask driver on a local two-worker cluster: tiled stills, a killed worker, an animation (issue 20).
 add_test(NAME dask_driver COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/dask/dask_driver_test.py $<TARGET_FILE:rcache>)
 set_tests_properties(dask_driver PROPERTIES LABELS dask TIMEOUT 300)
+# rcache images and cache files identical for 1, 2 and 3 threads (issue 16: the cache's parallel steps).
+add_test(NAME cli_thread_determinism COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/thread_determinism_tests.sh $<TARGET_FILE:rcache>)
+set_tests_properties(cli_thread_determinism PROPERTIES LABELS cli TIMEOUT 300)

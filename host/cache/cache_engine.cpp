@@ -10,6 +10,7 @@
 #include "cl/sh_backend.h"
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/parallel_select.h"
 #include "core/rng.h"
 #include "core/timing.h"
 #include "render/direct_light.h"
@@ -36,6 +37,44 @@ void frameRows(const Frame& f, float* out) {
   const Vec3 rows[3] = {f.t, f.b, f.n};
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) out[3 * r + c] = rows[r][c];
+}
+
+// The points of each cache key (tech[i] cached), in point order per key: one order-preserving
+// parallel selection per distinct key (a handful per call).
+std::map<CacheKey, std::vector<size_t>> groupByKey(const std::vector<Technique>& tech, const std::vector<CacheKey>& keys) {
+  const size_t n = tech.size();
+  const size_t blocks = (n + kSelectBlock - 1) / kSelectBlock;
+  std::vector<std::vector<CacheKey>> blockKeys(blocks);
+  parallelFor(blocks, 1, [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b) {
+      std::vector<CacheKey>& found = blockKeys[b];
+      const size_t end = std::min(n, (b + 1) * kSelectBlock);
+      for (size_t i = b * kSelectBlock; i < end; ++i) {
+        if (!isCached(tech[i])) continue;
+        const auto same = [&](const CacheKey& k) { return !(k < keys[i]) && !(keys[i] < k); };
+        if (std::find_if(found.begin(), found.end(), same) == found.end()) found.push_back(keys[i]);
+      }
+    }
+  });
+  std::map<CacheKey, std::vector<size_t>> groups;
+  for (const auto& found : blockKeys)
+    for (const CacheKey& k : found) groups[k];
+  for (auto& group : groups) {
+    const CacheKey& key = group.first;
+    group.second = parallelSelect(n, [&](size_t i) {
+      return isCached(tech[i]) && !(keys[i] < key) && !(key < keys[i]);
+    });
+  }
+  return groups;
+}
+
+// Frees the lookups' contribution lists on all threads: hundreds of thousands of small
+// allocations per call, which the destructor would free one by one on the calling thread.
+void releaseLookups(std::vector<Lookup>& lookups) {
+  parallelFor(lookups.size(), 4096, [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) std::vector<RcContribution>().swap(lookups[i].entries);
+  });
+  lookups.clear();
 }
 
 }  // namespace
@@ -138,20 +177,22 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
   });
   std::vector<Color> ind;
   indirect(pts, ind, nullptr, relaxedScale);
-  for (size_t i = 0; i < pts.size(); ++i) {
-    out[i] += ind[i];
-    // A textured factor scales everything the point reflects (Bsdf::tint), after the cache.
-    const Bsdf* bsdf = pts[i].active ? ctx_.scene.bsdfs[pts[i].hit.bsdf].get() : nullptr;
-    if (bsdf && bsdf->tinted()) out[i] *= bsdf->tint(pts[i].hit.uv, pts[i].wo);
-  }
+  parallelFor(pts.size(), 4096, [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      out[i] += ind[i];
+      // A textured factor scales everything the point reflects (Bsdf::tint), after the cache.
+      const Bsdf* bsdf = pts[i].active ? ctx_.scene.bsdfs[pts[i].hit.bsdf].get() : nullptr;
+      if (bsdf && bsdf->tinted()) out[i] *= bsdf->tint(pts[i].hit.uv, pts[i].wo);
+    }
+  });
 }
 
 void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color>& out, std::vector<LookupAov>* aov,
                            float relaxedScale) {
   out.assign(pts.size(), Color(0.0f));
   if (aov) aov->assign(pts.size(), LookupAov{});
-  // Classify in parallel (technique and cache key per point), then group serially over the few
-  // distinct keys in point order: millions of record-ray hits pass through here in the fill.
+  // Classify in parallel (technique and cache key per point), then group by the few distinct keys
+  // in point order (groupByKey): millions of record-ray hits pass through here in the fill.
   std::vector<Technique> tech(pts.size(), Technique::None);
   std::vector<CacheKey> keys(pts.size());
   parallelFor(pts.size(), 4096, [&](size_t b, size_t e) {
@@ -162,21 +203,9 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
       if (isCached(tech[i])) keys[i] = keyFor(sp);
     }
   });
-  std::map<CacheKey, std::vector<size_t>> groups;
-  std::vector<size_t> sampled;
-  {
-    CacheKey lastKey{};
-    std::vector<size_t>* last = nullptr;
-    for (size_t i = 0; i < pts.size(); ++i) {
-      if (tech[i] == Technique::ImportanceSampling) sampled.push_back(i);
-      if (!isCached(tech[i])) continue;
-      if (!last || keys[i] < lastKey || lastKey < keys[i]) {
-        last = &groups[keys[i]];
-        lastKey = keys[i];
-      }
-      last->push_back(i);
-    }
-  }
+  const std::vector<size_t> sampled =
+      parallelSelect(pts.size(), [&](size_t i) { return tech[i] == Technique::ImportanceSampling; });
+  const std::map<CacheKey, std::vector<size_t>> groups = groupByKey(tech, keys);
   for (auto& group : groups) {
     // Named references, not a structured binding: C++17 lambdas cannot capture those (clang).
     const CacheKey& key = group.first;
@@ -192,21 +221,26 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
     parallelFor(idx.size(), 4096, [&](size_t b, size_t e) {
       for (size_t j = b; j < e; ++j) out[idx[j]] = L[j];
     });
-    if (!aov) continue;
-    RadianceCache& cache = cacheFor(key);
-    for (size_t j = 0; j < idx.size(); ++j) {
-      LookupAov& a = (*aov)[idx[j]];
-      a.contributors = static_cast<int>(lookups[j].entries.size());
-      for (const auto& e : lookups[j].entries) {
-        const RecordInfo r = cache.info(static_cast<uint32_t>(e.record));
-        a.meanA += r.a;
-        a.meanRadiusPx += r.a * r.R / footprint(r.p);
-      }
-      if (a.contributors > 0) {
-        a.meanA /= a.contributors;
-        a.meanRadiusPx /= a.contributors;
-      }
+    if (aov) {
+      const RadianceCache& cache = cacheFor(key);
+      parallelFor(idx.size(), 1024, [&](size_t b, size_t e) {
+        const RadianceCache::Reader reader = cache.reader();
+        for (size_t j = b; j < e; ++j) {
+          LookupAov& a = (*aov)[idx[j]];
+          a.contributors = static_cast<int>(lookups[j].entries.size());
+          for (const auto& c : lookups[j].entries) {
+            const RecordInfo& r = reader.info(static_cast<uint32_t>(c.record));
+            a.meanA += r.a;
+            a.meanRadiusPx += r.a * r.R / footprint(r.p);
+          }
+          if (a.contributors > 0) {
+            a.meanA /= a.contributors;
+            a.meanRadiusPx /= a.contributors;
+          }
+        }
+      });
     }
+    releaseLookups(lookups);
   }
   if (!sampled.empty()) {
     std::vector<ShadePoint> sub(sampled.size());
@@ -216,23 +250,36 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
     std::vector<Color> L;
     // Paths continued below a sharp surface keep the relaxed lookups of the final pass.
     continuePaths(sub, L, relaxedScale);
-    for (size_t j = 0; j < sampled.size(); ++j) out[sampled[j]] = L[j];
+    parallelFor(sampled.size(), 4096, [&](size_t b, size_t e) {
+      for (size_t j = b; j < e; ++j) out[sampled[j]] = L[j];
+    });
   }
 }
 
 void CacheEngine::fill(const std::vector<ShadePoint>& pts, const std::vector<float>& baseLum, bool adaptive) {
-  std::map<CacheKey, std::vector<size_t>> groups;
-  for (size_t i = 0; i < pts.size(); ++i)
-    if (isCached(technique(pts[i])) && withinMaxDepth(maxDepth_, pts[i].depth + 2)) groups[keyFor(pts[i])].push_back(i);
-  for (auto& [key, idx] : groups) {
+  std::vector<Technique> tech(pts.size(), Technique::None);
+  std::vector<CacheKey> keys(pts.size());
+  parallelFor(pts.size(), 4096, [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      const Technique t = technique(pts[i]);
+      if (!isCached(t) || !withinMaxDepth(maxDepth_, pts[i].depth + 2)) continue;
+      tech[i] = t;
+      keys[i] = keyFor(pts[i]);
+    }
+  });
+  for (const auto& group : groupByKey(tech, keys)) {
+    const std::vector<size_t>& idx = group.second;
     std::vector<ShadePoint> sub(idx.size());
     std::vector<float> lum(idx.size(), 0.0f);
-    for (size_t j = 0; j < idx.size(); ++j) {
-      sub[j] = pts[idx[j]];
-      if (idx[j] < baseLum.size()) lum[j] = baseLum[idx[j]];
-    }
+    parallelFor(idx.size(), 4096, [&](size_t b, size_t e) {
+      for (size_t j = b; j < e; ++j) {
+        sub[j] = pts[idx[j]];
+        if (idx[j] < baseLum.size()) lum[j] = baseLum[idx[j]];
+      }
+    });
     std::vector<Lookup> lookups;
-    ensureCoverage(key, sub, lookups, &lum, adaptive);
+    ensureCoverage(group.first, sub, lookups, &lum, adaptive);
+    releaseLookups(lookups);
   }
 }
 
@@ -267,27 +314,30 @@ std::vector<size_t> CacheEngine::pointsToRecheck(const std::vector<Lookup>& look
   if (relaxedScale > 1.0f) {
     todo.resize(n);
     for (size_t i = 0; i < n; ++i) todo[i] = i;
-  } else if (!shrunk.empty())
-    for (size_t i = 0; i < n; ++i)
+  } else if (!shrunk.empty()) {
+    todo = parallelSelect(n, [&](size_t i) {
       for (const RcContribution& c : lookups[i].entries)
-        if (std::binary_search(shrunk.begin(), shrunk.end(), static_cast<uint32_t>(c.record))) {
-          todo.push_back(i);
-          break;
-        }
+        if (std::binary_search(shrunk.begin(), shrunk.end(), static_cast<uint32_t>(c.record))) return true;
+      return false;
+    });
+  }
   shrunk.clear();
   return todo;
 }
 
 std::vector<ShadePoint> CacheEngine::recordCandidates(const std::vector<ShadePoint>& pts,
-                                                      std::vector<size_t> uncovered, float sepPx) const {
-  // Deterministic shuffle (by the points' seeds) so candidates spread over the batch.
-  std::sort(uncovered.begin(), uncovered.end(), [&](size_t x, size_t y) {
-    const uint64_t hx = hashMix(pts[x].seed, kSaltCandidateOrder), hy = hashMix(pts[y].seed, kSaltCandidateOrder);
-    return hx != hy ? hx < hy : x < y;
+                                                      const std::vector<size_t>& uncovered, float sepPx) const {
+  // Deterministic shuffle (by the points' seeds) so candidates spread over the batch; the keys
+  // are hashed once each, in parallel, not twice per comparison.
+  std::vector<std::pair<uint64_t, size_t>> order(uncovered.size());
+  parallelFor(order.size(), 4096, [&](size_t b, size_t e) {
+    for (size_t j = b; j < e; ++j) order[j] = {hashMix(pts[uncovered[j]].seed, kSaltCandidateOrder), uncovered[j]};
   });
+  std::sort(order.begin(), order.end());
   RecordOctree accepted(lo_, hi_);
   std::vector<ShadePoint> cands;
-  for (size_t i : uncovered) {
+  for (const auto& keyed : order) {
+    const size_t i = keyed.second;
     const ShadePoint& sp = pts[i];
     bool near = false;
     accepted.query(sp.hit.p, [&](uint32_t id) {
@@ -320,10 +370,8 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
   int adaptiveRounds = 0;
   bool created = false;
   std::vector<uint32_t> shrunk;  // records whose radius clamping lowered since the last check
-  std::vector<size_t> all;
   // Points off the float range (a hit on an overflowing sphere) cannot hold a record.
-  for (size_t i = 0; i < n; ++i)
-    if (isFinite(pts[i].hit.p)) all.push_back(i);
+  const std::vector<size_t> all = parallelSelect(n, [&](size_t i) { return isFinite(pts[i].hit.p); });
   std::vector<size_t> todo = all;
   // Each creation round covers at least the points its records were made at (radius_floor.h), so
   // the loop ends within about 2n rounds; the bound and the cancel check are the last resort.
@@ -331,9 +379,7 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
   for (size_t round = 0; round < maxRounds && !(ctx_.cancel && ctx_.cancel->load(std::memory_order_relaxed));
        ++round) {
     lookUp(cache, pts, todo, lookups, relaxedScale);
-    std::vector<size_t> uncovered;
-    for (size_t i : todo)
-      if (!lookups[i].covered()) uncovered.push_back(i);
+    std::vector<size_t> uncovered = parallelSelectFrom(todo, [&](size_t i) { return !lookups[i].covered(); });
     if (uncovered.empty() && created) {
       created = false;
       todo = pointsToRecheck(lookups, shrunk, relaxedScale);
@@ -403,7 +449,9 @@ void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectB
         }
     }
   });
-  parallelFor(total, 1024, [&](size_t b, size_t e) { ctx_.accel.intersect(rays.data() + b, hits.data() + b, e - b); });
+  parallelFor(total, 1024, [&](size_t b, size_t e) {
+    ctx_.accel.intersectBatch(rays.data() + b, hits.data() + b, e - b, BatchQuery::Packet16);
+  });
   stats_.recordRays += total;
   // The radiance arriving along each ray: the hit's outgoing radiance, shaded recursively.
   std::vector<ShadePoint> next(total);
@@ -840,23 +888,22 @@ void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<
       rays[i] = Accel::spawnRay(sp.hit, sp.frame.toWorld(s->wi));
     }
   });
-  std::vector<size_t> live;
-  for (size_t i = 0; i < n; ++i)
-    if (alive[i]) live.push_back(i);
+  const std::vector<size_t> live = parallelSelect(n, [&](size_t i) { return alive[i] != 0; });
   if (live.empty()) return;
   std::vector<Ray> liveRays(live.size());
-  for (size_t j = 0; j < live.size(); ++j) liveRays[j] = rays[live[j]];
   std::vector<Hit> hits(live.size());
-  parallelFor(live.size(), 1024, [&](size_t b, size_t e) { ctx_.accel.intersect(liveRays.data() + b, hits.data() + b, e - b); });
-  stats_.pathRays += live.size();
   std::vector<ShadePoint> next(live.size());
-  for (size_t j = 0; j < live.size(); ++j) {
-    const ShadePoint& sp = pts[live[j]];
-    const Hit& h = hits[j];
-    next[j] = shadePointOf(h, liveRays[j].d, sp.depth + 1, sp.level + (delta[live[j]] ? 0 : 1),
-                           hashMix(sp.seed, 0xC0471));
-    next[j].pixel = sp.pixel;
-  }
+  parallelFor(live.size(), 1024, [&](size_t b, size_t e) {
+    for (size_t j = b; j < e; ++j) liveRays[j] = rays[live[j]];
+    ctx_.accel.intersectBatch(liveRays.data() + b, hits.data() + b, e - b, BatchQuery::Packet16);
+    for (size_t j = b; j < e; ++j) {
+      const ShadePoint& sp = pts[live[j]];
+      next[j] = shadePointOf(hits[j], liveRays[j].d, sp.depth + 1, sp.level + (delta[live[j]] ? 0 : 1),
+                             hashMix(sp.seed, 0xC0471));
+      next[j].pixel = sp.pixel;
+    }
+  });
+  stats_.pathRays += live.size();
   std::vector<Color> L;
   radianceOut(next, L, relaxedScale);
   // The continuation ray is the point's MIS BSDF sample too (continuesPath): add the emitter it

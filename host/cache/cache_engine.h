@@ -131,7 +131,7 @@ class CacheEngine {
               std::vector<Lookup>& lookups, float relaxedScale);
   std::vector<size_t> pointsToRecheck(const std::vector<Lookup>& lookups, std::vector<uint32_t>& shrunk,
                                       float relaxedScale);
-  std::vector<ShadePoint> recordCandidates(const std::vector<ShadePoint>& pts, std::vector<size_t> uncovered,
+  std::vector<ShadePoint> recordCandidates(const std::vector<ShadePoint>& pts, const std::vector<size_t>& uncovered,
                                            float sepPx) const;
   // Returns the ids of older records whose radius the new ones' neighbour clamping lowered.
   std::vector<uint32_t> buildRecords(const CacheKey& key, const std::vector<ShadePoint>& cands);

@@ -67,6 +67,7 @@ class RadianceCache {
     Color cosineIrradiance(const Lookup& lk, const Vec3& n, bool gradients) const {
       return cache_.cosineIrradianceLocked(lk, n, gradients);
     }
+    const RecordInfo& info(uint32_t id) const { return cache_.infos_[id]; }
 
    private:
     const RadianceCache& cache_;
