@@ -68,6 +68,12 @@ std::map<CacheKey, std::vector<size_t>> groupByKey(const std::vector<Technique>&
   return groups;
 }
 
+// The points idx of pts (all of them in order: an empty array, the caller uses pts itself).
+ParallelArray<ShadePoint> gather(PointView pts, const std::vector<size_t>& idx) {
+  if (idx.size() == pts.size()) return {};
+  return ParallelArray<ShadePoint>(idx.size(), [&](size_t j) { return pts[idx[j]]; });
+}
+
 // Frees the lookups' contribution lists on all threads: hundreds of thousands of small
 // allocations per call, which the destructor would free one by one on the calling thread.
 void releaseLookups(std::vector<Lookup>& lookups) {
@@ -153,7 +159,7 @@ RadianceCache& CacheEngine::cacheFor(const CacheKey& key) {
   return *it->second;
 }
 
-void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Color>& out, float relaxedScale) {
+void CacheEngine::radianceOut(PointView pts, std::vector<Color>& out, float relaxedScale) {
   out.assign(pts.size(), Color(0.0f));
   parallelFor(pts.size(), 64, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
@@ -187,7 +193,7 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
   });
 }
 
-void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color>& out, std::vector<LookupAov>* aov,
+void CacheEngine::indirect(PointView pts, std::vector<Color>& out, std::vector<LookupAov>* aov,
                            float relaxedScale) {
   out.assign(pts.size(), Color(0.0f));
   if (aov) aov->assign(pts.size(), LookupAov{});
@@ -210,10 +216,8 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
     // Named references, not a structured binding: C++17 lambdas cannot capture those (clang).
     const CacheKey& key = group.first;
     const std::vector<size_t>& idx = group.second;
-    std::vector<ShadePoint> sub(idx.size());
-    parallelFor(idx.size(), 4096, [&](size_t b, size_t e) {
-      for (size_t j = b; j < e; ++j) sub[j] = pts[idx[j]];
-    });
+    const ParallelArray<ShadePoint> copy = gather(pts, idx);
+    const PointView sub = idx.size() == pts.size() ? pts : PointView(copy);
     std::vector<Lookup> lookups;
     ensureCoverage(key, sub, lookups, nullptr, false, relaxedScale);
     std::vector<Color> L;
@@ -243,10 +247,8 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
     releaseLookups(lookups);
   }
   if (!sampled.empty()) {
-    std::vector<ShadePoint> sub(sampled.size());
-    parallelFor(sampled.size(), 4096, [&](size_t b, size_t e) {
-      for (size_t j = b; j < e; ++j) sub[j] = pts[sampled[j]];
-    });
+    const ParallelArray<ShadePoint> copy = gather(pts, sampled);
+    const PointView sub = sampled.size() == pts.size() ? pts : PointView(copy);
     std::vector<Color> L;
     // Paths continued below a sharp surface keep the relaxed lookups of the final pass.
     continuePaths(sub, L, relaxedScale);
@@ -269,13 +271,12 @@ void CacheEngine::fill(const std::vector<ShadePoint>& pts, const std::vector<flo
   });
   for (const auto& group : groupByKey(tech, keys)) {
     const std::vector<size_t>& idx = group.second;
-    std::vector<ShadePoint> sub(idx.size());
+    const ParallelArray<ShadePoint> copy = gather(pts, idx);
+    const PointView sub = idx.size() == pts.size() ? PointView(pts) : PointView(copy);
     std::vector<float> lum(idx.size(), 0.0f);
     parallelFor(idx.size(), 4096, [&](size_t b, size_t e) {
-      for (size_t j = b; j < e; ++j) {
-        sub[j] = pts[idx[j]];
+      for (size_t j = b; j < e; ++j)
         if (idx[j] < baseLum.size()) lum[j] = baseLum[idx[j]];
-      }
     });
     std::vector<Lookup> lookups;
     ensureCoverage(group.first, sub, lookups, &lum, adaptive);
@@ -283,7 +284,7 @@ void CacheEngine::fill(const std::vector<ShadePoint>& pts, const std::vector<flo
   }
 }
 
-void CacheEngine::lookUp(RadianceCache& cache, const std::vector<ShadePoint>& pts, const std::vector<size_t>& todo,
+void CacheEngine::lookUp(RadianceCache& cache, PointView pts, const std::vector<size_t>& todo,
                          std::vector<Lookup>& lookups, float relaxedScale) {
   parallelFor(todo.size(), 64, [&](size_t b, size_t e) {
     const RadianceCache::Reader reader = cache.reader();
@@ -325,7 +326,7 @@ std::vector<size_t> CacheEngine::pointsToRecheck(const std::vector<Lookup>& look
   return todo;
 }
 
-std::vector<ShadePoint> CacheEngine::recordCandidates(const std::vector<ShadePoint>& pts,
+std::vector<ShadePoint> CacheEngine::recordCandidates(PointView pts,
                                                       const std::vector<size_t>& uncovered, float sepPx) const {
   // Deterministic shuffle (by the points' seeds) so candidates spread over the batch; the keys
   // are hashed once each, in parallel, not twice per comparison.
@@ -356,7 +357,7 @@ std::vector<ShadePoint> CacheEngine::recordCandidates(const std::vector<ShadePoi
 
 // Rounds of: look up the points still to do; if all are covered, re-check those whose records
 // shrank and run the adaptive check; else place a batch of records at spread-out uncovered points.
-void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoint>& pts, std::vector<Lookup>& lookups,
+void CacheEngine::ensureCoverage(const CacheKey& key, PointView pts, std::vector<Lookup>& lookups,
                                  const std::vector<float>* baseLum, bool adaptive, float relaxedScale) {
   RadianceCache& cache = cacheFor(key);
   const size_t n = pts.size();
@@ -430,47 +431,43 @@ ProjectBatch CacheEngine::recordBatch(const CacheKey& key, const std::vector<Sha
   return rayBatch;
 }
 
-void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectBatch& rayBatch, std::vector<Hit>& hits) {
+void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectBatch& rayBatch,
+                                  ParallelArray<Hit>& hits) {
   const int M = rayBatch.M, N = rayBatch.N, S = M * N;
   const size_t total = cands.size() * S;
-  std::vector<Ray> rays(total);
-  hits.assign(total, Hit{});
-  parallelFor(cands.size(), 1, [&](size_t b0, size_t b1) {
-    for (size_t b = b0; b < b1; ++b) {
-      const ShadePoint& c = cands[b];
-      for (int j = 0; j < M; ++j)
-        for (int k = 0; k < N; ++k) {
-          const size_t s = static_cast<size_t>(j) * N + k;
-          const float ct = 1.0f - (j + rayBatch.pattern[2 * s]) / M;
-          const float st = std::sqrt(std::max(0.0f, 1.0f - ct * ct));
-          const float phi = 2.0f * kPi * (k + rayBatch.pattern[2 * s + 1]) / N + rayBatch.phi0[b];
-          const Vec3 local(st * std::cos(phi), st * std::sin(phi), ct);
-          rays[b * S + s] = Accel::spawnRay(c.hit, c.frame.toWorld(local));
-        }
-    }
+  // Ray s of record b: cell (j, k) = (s / N, s % N) of the stratified pattern, turned by the
+  // record's azimuth.
+  const ParallelArray<Ray> rays(total, [&](size_t i) {
+    const size_t b = i / S, s = i % S;
+    const ShadePoint& c = cands[b];
+    const int j = static_cast<int>(s) / N, k = static_cast<int>(s) % N;
+    const float ct = 1.0f - (j + rayBatch.pattern[2 * s]) / M;
+    const float st = std::sqrt(std::max(0.0f, 1.0f - ct * ct));
+    const float phi = 2.0f * kPi * (k + rayBatch.pattern[2 * s + 1]) / N + rayBatch.phi0[b];
+    const Vec3 local(st * std::cos(phi), st * std::sin(phi), ct);
+    return Accel::spawnRay(c.hit, c.frame.toWorld(local));
   });
+  hits = ParallelArray<Hit>(total);
   parallelFor(total, 1024, [&](size_t b, size_t e) {
     ctx_.accel.intersectBatch(rays.data() + b, hits.data() + b, e - b, BatchQuery::Packet16);
   });
   stats_.recordRays += total;
   // The radiance arriving along each ray: the hit's outgoing radiance, shaded recursively.
-  std::vector<ShadePoint> next(total);
-  parallelFor(total, 1024, [&](size_t b, size_t e) {
-    for (size_t i = b; i < e; ++i) {
+  std::vector<Color> L;
+  {
+    const ParallelArray<ShadePoint> next(total, [&](size_t i) {
       const ShadePoint& c = cands[i / S];
-      next[i] = shadePointOf(hits[i], rays[i].d, c.depth + 1, c.level + 1, hashMix(c.seed, i % S, kSaltRecordRayHit));
+      ShadePoint sp = shadePointOf(hits[i], rays[i].d, c.depth + 1, c.level + 1, hashMix(c.seed, i % S, kSaltRecordRayHit));
       // The light samples at a record's S hits are one padded Sobol sequence (index = ray): like
       // the ray directions they are stratified over the record, so the record's estimate of
       // direct light at its neighbours converges faster than with independent samples.
-      next[i].ldSeed = static_cast<uint32_t>(hashMix(c.seed, kSaltRecordLightSequence));
-      next[i].ldIndex = static_cast<uint32_t>(i % S);
-      next[i].ldDim = kRecordLowDiscrepancyFirstDim;
-    }
-  });
-  std::vector<Color> L;
-  radianceOut(next, L);
-  next.clear();
-  next.shrink_to_fit();
+      sp.ldSeed = static_cast<uint32_t>(hashMix(c.seed, kSaltRecordLightSequence));
+      sp.ldIndex = static_cast<uint32_t>(i % S);
+      sp.ldDim = kRecordLowDiscrepancyFirstDim;
+      return sp;
+    });
+    radianceOut(next, L);
+  }
   rayBatch.radiance.resize(total * 3);
   rayBatch.distance.resize(total);
   const bool carriesEnvironment = envSplit_->active();
@@ -540,7 +537,7 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
   const int B = static_cast<int>(cands.size());
   ProjectBatch rayBatch = recordBatch(key, cands);
   const int S = rayBatch.M * rayBatch.N;
-  std::vector<Hit> hits;
+  ParallelArray<Hit> hits;
   traceRecordRays(cands, rayBatch, hits);
   ProjectResult projected;
   auto t0 = SteadyClock::now();
@@ -570,7 +567,7 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
   return shrunk;
 }
 
-void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<ShadePoint>& pts,
+void CacheEngine::interpolateAndShade(const CacheKey& key, PointView pts,
                                       const std::vector<Lookup>& lookups, std::vector<Color>& out) {
   RadianceCache& cache = cacheFor(key);
   out.assign(pts.size(), Color(0.0f));
@@ -599,24 +596,27 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
       stats_.lambertianLookups += count;
     });
     stats_.interpolation_s += secondsSince(t0);
-    std::vector<size_t> rest;
-    for (size_t i = 0; i < pts.size(); ++i)
-      if (!lambertian[i]) rest.push_back(i);
+    const std::vector<size_t> rest = parallelSelect(pts.size(), [&](size_t i) { return !lambertian[i]; });
     if (rest.empty()) return;
     if (rest.size() < pts.size()) {
-      std::vector<ShadePoint> subPts(rest.size());
+      const ParallelArray<ShadePoint> subPts = gather(pts, rest);
       std::vector<Lookup> subLookups(rest.size());
-      for (size_t j = 0; j < rest.size(); ++j) subPts[j] = pts[rest[j]], subLookups[j] = lookups[rest[j]];
+      parallelFor(rest.size(), 1024, [&](size_t b, size_t e) {
+        for (size_t j = b; j < e; ++j) subLookups[j] = lookups[rest[j]];
+      });
       std::vector<Color> subOut;
       interpolateWithKernels(key, subPts, subLookups, subOut);
-      for (size_t j = 0; j < rest.size(); ++j) out[rest[j]] = subOut[j];
+      releaseLookups(subLookups);
+      parallelFor(rest.size(), 4096, [&](size_t b, size_t e) {
+        for (size_t j = b; j < e; ++j) out[rest[j]] = subOut[j];
+      });
       return;
     }
   }
   interpolateWithKernels(key, pts, lookups, out);
 }
 
-void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<ShadePoint>& pts,
+void CacheEngine::interpolateWithKernels(const CacheKey& key, PointView pts,
                                          const std::vector<Lookup>& lookups, std::vector<Color>& out) {
   RadianceCache& cache = cacheFor(key);
   out.assign(pts.size(), Color(0.0f));
@@ -650,8 +650,14 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
     const auto t0 = SteadyClock::now();
     ctx_.backend->interpolate(interp, part);
     stats_.interpolation_s += secondsSince(t0);
-    for (size_t j = 0; j < idx.size(); ++j)
-      std::copy(part.begin() + K * j, part.begin() + K * (j + 1), lambda.begin() + K * idx[j]);
+    if (lambda.empty()) {  // the chunk's only frame mode: idx is the whole chunk, in order
+      lambda = std::move(part);
+      return;
+    }
+    parallelFor(idx.size(), 256, [&](size_t b, size_t e) {
+      for (size_t j = b; j < e; ++j)
+        std::copy(part.begin() + K * j, part.begin() + K * (j + 1), lambda.begin() + K * idx[j]);
+    });
   };
   for (size_t begin = 0; begin < pts.size(); begin += kChunk) {
     const size_t count = std::min(kChunk, pts.size() - begin);
@@ -665,15 +671,16 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
       (record ? recordIdx : worldIdx).push_back(static_cast<uint32_t>(j));
     }
     stats_.recordFrameLookups += recordIdx.size();
-    std::vector<float> lambda(K * count, 0.0f);
+    std::vector<float> lambda;
+    if (!worldIdx.empty() && !recordIdx.empty()) lambda.assign(K * count, 0.0f);
     interpolate(begin, worldIdx, true, lambda);
     interpolate(begin, recordIdx, false, lambda);
-    shadeLambda(pts, begin, count, key.order, lambda, out, nullptr);
+    shadeLambda(pts, begin, count, key.order, std::move(lambda), out, nullptr);
   }
 }
 
-void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, size_t count, int order,
-                              const std::vector<float>& lambda, std::vector<Color>& out,
+void CacheEngine::shadeLambda(PointView pts, size_t begin, size_t count, int order,
+                              std::vector<float> lambda, std::vector<Color>& out,
                               const std::vector<size_t>* outIndex) {
   const size_t n2 = static_cast<size_t>(order) * order;
   auto point = [&](size_t j) -> const ShadePoint& { return pts[outIndex ? (*outIndex)[j] : begin + j]; };
@@ -710,7 +717,7 @@ void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, 
   BrdfDotBatch dotBatch;
   dotBatch.order = order;
   dotBatch.points = static_cast<int>(count);
-  dotBatch.lambda = lambda;
+  dotBatch.lambda = std::move(lambda);
   dotBatch.wo.resize(3 * count);
   dotBatch.material.resize(count);
   for (size_t j = 0; j < count; ++j) {
@@ -751,17 +758,20 @@ void CacheEngine::addRecords(const RadianceCache& cache, const std::vector<uint3
     interp.gradB.resize(K * ids.size());
   }
   if (!world) interp.recordFrames.resize(9 * ids.size());
-  for (size_t r = 0; r < ids.size(); ++r) {
-    cache.copyCoefficients(ids[r], world, &interp.lambda[K * r], interp.gradients ? &interp.gradT[K * r] : nullptr,
-                           interp.gradients ? &interp.gradB[K * r] : nullptr);
-    if (!world) frameRows(cache.info(ids[r]).frame, &interp.recordFrames[9 * r]);
-  }
+  parallelFor(ids.size(), 64, [&](size_t b, size_t e) {
+    const RadianceCache::Reader reader = cache.reader();
+    for (size_t r = b; r < e; ++r) {
+      reader.copyCoefficients(ids[r], world, &interp.lambda[K * r], interp.gradients ? &interp.gradT[K * r] : nullptr,
+                              interp.gradients ? &interp.gradB[K * r] : nullptr);
+      if (!world) frameRows(reader.info(ids[r]).frame, &interp.recordFrames[9 * r]);
+    }
+  });
 }
 
 // Each contribution (point i, record) of the points covered by two or more records, as the
 // record alone predicts the point's outgoing radiance (its Λ moved by its gradient, rotated,
 // dotted with the BRDF).
-std::vector<Color> CacheEngine::recordPredictions(const CacheKey& key, const std::vector<ShadePoint>& pts,
+std::vector<Color> CacheEngine::recordPredictions(const CacheKey& key, PointView pts,
                                                   const std::vector<size_t>& pairPoint,
                                                   const std::vector<RcContribution>& pairEntry) {
   RadianceCache& cache = cacheFor(key);
@@ -786,7 +796,7 @@ std::vector<Color> CacheEngine::recordPredictions(const CacheKey& key, const std
     stats_.interpolation_s += secondsSince(t0);
     std::vector<size_t> idx(pairPoint.begin() + begin, pairPoint.begin() + begin + count);
     std::vector<Color> part(count);
-    shadeLambda(pts, 0, count, key.order, lambda, part, &idx);
+    shadeLambda(pts, 0, count, key.order, std::move(lambda), part, &idx);
     std::copy(part.begin(), part.end(), pred.begin() + begin);
   }
   return pred;
@@ -795,7 +805,7 @@ std::vector<Color> CacheEngine::recordPredictions(const CacheKey& key, const std
 // EGSR 2006: at a point covered by several records, each record's own prediction should agree; a
 // disagreement above the Weber threshold would show as a visible seam, so the most deviant record
 // gets a smaller a_i.
-bool CacheEngine::adaptiveCheck(const CacheKey& key, const std::vector<ShadePoint>& pts,
+bool CacheEngine::adaptiveCheck(const CacheKey& key, PointView pts,
                                 const std::vector<Lookup>& lookups, const std::vector<float>& baseLum) {
   std::vector<size_t> pairPoint;
   std::vector<RcContribution> pairEntry;
@@ -859,10 +869,10 @@ bool CacheEngine::shrinkRecords(const CacheKey& key, const std::map<uint32_t, fl
   return changed;
 }
 
-void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<Color>& out, float relaxedScale) {
+void CacheEngine::continuePaths(PointView pts, std::vector<Color>& out, float relaxedScale) {
   const size_t n = pts.size();
   out.assign(n, Color(0.0f));
-  std::vector<Ray> rays(n);
+  ParallelArray<Ray> rays(n);
   std::vector<Color> weight(n, Color(0.0f));
   std::vector<float> pdf(n, 0.0f);
   std::vector<char> alive(n, 0), delta(n, 0);
@@ -890,22 +900,23 @@ void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<
   });
   const std::vector<size_t> live = parallelSelect(n, [&](size_t i) { return alive[i] != 0; });
   if (live.empty()) return;
-  std::vector<Ray> liveRays(live.size());
-  std::vector<Hit> hits(live.size());
-  std::vector<ShadePoint> next(live.size());
+  const ParallelArray<Ray> liveRays(live.size(), [&](size_t j) { return rays[live[j]]; });
+  ParallelArray<Hit> hits(live.size());
   parallelFor(live.size(), 1024, [&](size_t b, size_t e) {
-    for (size_t j = b; j < e; ++j) liveRays[j] = rays[live[j]];
     ctx_.accel.intersectBatch(liveRays.data() + b, hits.data() + b, e - b, BatchQuery::Packet16);
-    for (size_t j = b; j < e; ++j) {
-      const ShadePoint& sp = pts[live[j]];
-      next[j] = shadePointOf(hits[j], liveRays[j].d, sp.depth + 1, sp.level + (delta[live[j]] ? 0 : 1),
-                             hashMix(sp.seed, 0xC0471));
-      next[j].pixel = sp.pixel;
-    }
   });
   stats_.pathRays += live.size();
   std::vector<Color> L;
-  radianceOut(next, L, relaxedScale);
+  {
+    const ParallelArray<ShadePoint> next(live.size(), [&](size_t j) {
+      const ShadePoint& sp = pts[live[j]];
+      ShadePoint hit = shadePointOf(hits[j], liveRays[j].d, sp.depth + 1, sp.level + (delta[live[j]] ? 0 : 1),
+                                    hashMix(sp.seed, 0xC0471));
+      hit.pixel = sp.pixel;
+      return hit;
+    });
+    radianceOut(next, L, relaxedScale);
+  }
   // The continuation ray is the point's MIS BSDF sample too (continuesPath): add the emitter it
   // found, weighted against the point's light samples.
   parallelFor(live.size(), 1024, [&](size_t b, size_t e) {

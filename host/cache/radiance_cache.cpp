@@ -149,6 +149,10 @@ RecordInfo RadianceCache::info(uint32_t id) const {
 
 void RadianceCache::copyCoefficients(uint32_t id, bool world, float* lambda, float* gradT, float* gradB) const {
   std::shared_lock lock(mutex_);
+  copyCoefficientsLocked(id, world, lambda, gradT, gradB);
+}
+
+void RadianceCache::copyCoefficientsLocked(uint32_t id, bool world, float* lambda, float* gradT, float* gradB) const {
   const size_t k = static_cast<size_t>(coeffsPerRecord());
   if (world && !hasWorld_) throw Error("RadianceCache: world-frame coefficients requested but not stored");
   const std::vector<float>& L = world ? lambdaW_ : lambda_;

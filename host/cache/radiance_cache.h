@@ -68,6 +68,9 @@ class RadianceCache {
       return cache_.cosineIrradianceLocked(lk, n, gradients);
     }
     const RecordInfo& info(uint32_t id) const { return cache_.infos_[id]; }
+    void copyCoefficients(uint32_t id, bool world, float* lambda, float* gradT, float* gradB) const {
+      cache_.copyCoefficientsLocked(id, world, lambda, gradT, gradB);
+    }
 
    private:
     const RadianceCache& cache_;
@@ -112,6 +115,7 @@ class RadianceCache {
   float maxReach_ = 0.0f;  // largest a_i·R_i ever inserted (bounds relaxed queries)
   void lookupLocked(const Vec3& p, const Vec3& n, Lookup& out, bool brute, float scale = 1.0f) const;
   Color cosineIrradianceLocked(const Lookup& lk, const Vec3& n, bool gradients) const;
+  void copyCoefficientsLocked(uint32_t id, bool world, float* lambda, float* gradT, float* gradB) const;
 };
 
 }  // namespace rc
