@@ -549,10 +549,13 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
     projected.gradB.assign(K * B, 0.0f);
   }
   std::vector<RecordInfo> infos(B);
+  parallelFor(static_cast<size_t>(B), 16, [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b)
+      infos[b] = clampRecord(key, cands[b], &hits[b * S], S, rayBatch.minDistance, &projected.lambda[K * b],
+                             &projected.gradT[K * b], &projected.gradB[K * b]);
+  });
   for (int b = 0; b < B; ++b) {
     stats_.droppedSamples += projected.dropped.empty() ? 0 : static_cast<uint64_t>(projected.dropped[b]);
-    infos[b] = clampRecord(key, cands[b], &hits[static_cast<size_t>(b) * S], S, rayBatch.minDistance, &projected.lambda[K * b],
-                           &projected.gradT[K * b], &projected.gradB[K * b]);
     if (key.level == 0 && cands[b].pixel >= 0) recordPixels_.push_back(cands[b].pixel);
   }
   WorldCopies world;
