@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cache/direct_light_batch.h"
 #include "cache/radius_floor.h"
 #include "cache/record_octree.h"
 #include "cache/rng_salts.h"
@@ -161,7 +162,14 @@ RadianceCache& CacheEngine::cacheFor(const CacheKey& key) {
 
 void CacheEngine::radianceOut(PointView pts, std::vector<Color>& out, float relaxedScale) {
   out.assign(pts.size(), Color(0.0f));
-  parallelFor(pts.size(), 64, [&](size_t b, size_t e) {
+  parallelFor(pts.size(), 256, [&](size_t b, size_t e) {
+    // Per thread, reused: the chunk's estimators, their shadow and BSDF rays traced as packets.
+    thread_local std::vector<DirectLightJob> jobs;
+    thread_local std::vector<uint32_t> jobPoint;
+    thread_local std::vector<Color> L;
+    thread_local DirectLightScratch scratch;
+    jobs.clear();
+    jobPoint.clear();
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& sp = pts[i];
       if (!sp.active) continue;
@@ -172,14 +180,19 @@ void CacheEngine::radianceOut(PointView pts, std::vector<Color>& out, float rela
       // its light sample from the record's low-discrepancy sequence (buildRecords), unless its
       // path continues: continuePaths starts that point's sequence afresh for the BSDF sample.
       const bool continues = continuesPath(sp);
-      Rng rng = continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1);
       const Bsdf& bsdf = *ctx_.scene.bsdfs[sp.hit.bsdf];
-      const RenderContext& lights = directLightContext(sp);
-      const Color L = continues             ? lightStrategyMis(lights, sp.hit, sp.frame, sp.wo, bsdf, rng, sp.lightSamples)
-                      : bsdf.isDiffuseOnly() ? directLightLightOnly(lights, sp.hit, sp.frame, sp.wo, bsdf, rng)
-                                             : directLight(lights, sp.hit, sp.frame, sp.wo, bsdf, rng);
-      if (isFinite(L)) out[i] = L;
+      jobs.push_back({&directLightContext(sp), &sp.hit, sp.frame, sp.wo, &bsdf,
+                      continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1),
+                      continues               ? DirectEstimator::LightStrategy
+                      : bsdf.isDiffuseOnly() ? DirectEstimator::LightOnly
+                                             : DirectEstimator::Full,
+                      continues ? sp.lightSamples : 1});
+      jobPoint.push_back(static_cast<uint32_t>(i));
     }
+    L.resize(jobs.size());
+    directLightBatch(jobs, L.data(), scratch);
+    for (size_t k = 0; k < jobs.size(); ++k)
+      if (isFinite(L[k])) out[jobPoint[k]] = L[k];
   });
   std::vector<Color> ind;
   indirect(pts, ind, nullptr, relaxedScale);
