@@ -22,3 +22,6 @@ set_tests_properties(dask_jobqueue PROPERTIES LABELS dask TIMEOUT 300 SKIP_RETUR
 # --time SECONDS (render/progressive.h): the budget honoured, whole passes, passes = a render of their spp.
 add_test(NAME cli_progressive COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/progressive_tests.sh $<TARGET_FILE:rcache>)
 set_tests_properties(cli_progressive PROPERTIES LABELS cli TIMEOUT 180)
+# rcache images and cache files identical for 1, 2 and 3 threads (issue 16: the cache's parallel steps).
+add_test(NAME cli_thread_determinism COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/thread_determinism_tests.sh $<TARGET_FILE:rcache>)
+set_tests_properties(cli_thread_determinism PROPERTIES LABELS cli TIMEOUT 300)

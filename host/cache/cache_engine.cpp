@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cache/direct_light_batch.h"
 #include "cache/radius_floor.h"
 #include "cache/record_octree.h"
 #include "cache/rng_salts.h"
@@ -10,6 +11,7 @@
 #include "cl/sh_backend.h"
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/parallel_select.h"
 #include "core/rng.h"
 #include "core/timing.h"
 #include "render/direct_light.h"
@@ -36,6 +38,50 @@ void frameRows(const Frame& f, float* out) {
   const Vec3 rows[3] = {f.t, f.b, f.n};
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) out[3 * r + c] = rows[r][c];
+}
+
+// The points of each cache key (tech[i] cached), in point order per key: one order-preserving
+// parallel selection per distinct key (a handful per call).
+std::map<CacheKey, std::vector<size_t>> groupByKey(const std::vector<Technique>& tech, const std::vector<CacheKey>& keys) {
+  const size_t n = tech.size();
+  const size_t blocks = (n + kSelectBlock - 1) / kSelectBlock;
+  std::vector<std::vector<CacheKey>> blockKeys(blocks);
+  parallelFor(blocks, 1, [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b) {
+      std::vector<CacheKey>& found = blockKeys[b];
+      const size_t end = std::min(n, (b + 1) * kSelectBlock);
+      for (size_t i = b * kSelectBlock; i < end; ++i) {
+        if (!isCached(tech[i])) continue;
+        const auto same = [&](const CacheKey& k) { return !(k < keys[i]) && !(keys[i] < k); };
+        if (std::find_if(found.begin(), found.end(), same) == found.end()) found.push_back(keys[i]);
+      }
+    }
+  });
+  std::map<CacheKey, std::vector<size_t>> groups;
+  for (const auto& found : blockKeys)
+    for (const CacheKey& k : found) groups[k];
+  for (auto& group : groups) {
+    const CacheKey& key = group.first;
+    group.second = parallelSelect(n, [&](size_t i) {
+      return isCached(tech[i]) && !(keys[i] < key) && !(key < keys[i]);
+    });
+  }
+  return groups;
+}
+
+// The points idx of pts (all of them in order: an empty array, the caller uses pts itself).
+ParallelArray<ShadePoint> gather(PointView pts, const std::vector<size_t>& idx) {
+  if (idx.size() == pts.size()) return {};
+  return ParallelArray<ShadePoint>(idx.size(), [&](size_t j) { return pts[idx[j]]; });
+}
+
+// Frees the lookups' contribution lists on all threads: hundreds of thousands of small
+// allocations per call, which the destructor would free one by one on the calling thread.
+void releaseLookups(std::vector<Lookup>& lookups) {
+  parallelFor(lookups.size(), 4096, [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) std::vector<RcContribution>().swap(lookups[i].entries);
+  });
+  lookups.clear();
 }
 
 }  // namespace
@@ -115,9 +161,16 @@ RadianceCache& CacheEngine::cacheFor(const CacheKey& key) {
   return *it->second;
 }
 
-void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Color>& out, float relaxedScale) {
+void CacheEngine::radianceOut(PointView pts, std::vector<Color>& out, float relaxedScale) {
   out.assign(pts.size(), Color(0.0f));
-  parallelFor(pts.size(), 64, [&](size_t b, size_t e) {
+  parallelFor(pts.size(), 256, [&](size_t b, size_t e) {
+    // Per thread, reused: the chunk's estimators, their shadow and BSDF rays traced as packets.
+    thread_local std::vector<DirectLightJob> jobs;
+    thread_local std::vector<uint32_t> jobPoint;
+    thread_local std::vector<Color> L;
+    thread_local DirectLightScratch scratch;
+    jobs.clear();
+    jobPoint.clear();
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& sp = pts[i];
       if (!sp.active) continue;
@@ -128,31 +181,38 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
       // its light sample from the record's low-discrepancy sequence (buildRecords), unless its
       // path continues: continuePaths starts that point's sequence afresh for the BSDF sample.
       const bool continues = continuesPath(sp);
-      Rng rng = continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1);
       const Bsdf& bsdf = *ctx_.scene.bsdfs[sp.hit.bsdf];
-      const RenderContext& lights = directLightContext(sp);
-      const Color L = continues             ? lightStrategyMis(lights, sp.hit, sp.frame, sp.wo, bsdf, rng, sp.lightSamples)
-                      : bsdf.isDiffuseOnly() ? directLightLightOnly(lights, sp.hit, sp.frame, sp.wo, bsdf, rng)
-                                             : directLight(lights, sp.hit, sp.frame, sp.wo, bsdf, rng);
-      if (isFinite(L)) out[i] = L;
+      jobs.push_back({&directLightContext(sp), &sp.hit, sp.frame, sp.wo, &bsdf,
+                      continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1),
+                      continues               ? DirectEstimator::LightStrategy
+                      : bsdf.isDiffuseOnly() ? DirectEstimator::LightOnly
+                                             : DirectEstimator::Full,
+                      continues ? sp.lightSamples : 1});
+      jobPoint.push_back(static_cast<uint32_t>(i));
     }
+    L.resize(jobs.size());
+    directLightBatch(jobs, L.data(), scratch);
+    for (size_t k = 0; k < jobs.size(); ++k)
+      if (isFinite(L[k])) out[jobPoint[k]] = L[k];
   });
   std::vector<Color> ind;
   indirect(pts, ind, nullptr, relaxedScale);
-  for (size_t i = 0; i < pts.size(); ++i) {
-    out[i] += ind[i];
-    // A textured factor scales everything the point reflects (Bsdf::tint), after the cache.
-    const Bsdf* bsdf = pts[i].active ? ctx_.scene.bsdfs[pts[i].hit.bsdf].get() : nullptr;
-    if (bsdf && bsdf->tinted()) out[i] *= bsdf->tint(pts[i].hit.uv, pts[i].wo);
-  }
+  parallelFor(pts.size(), 4096, [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      out[i] += ind[i];
+      // A textured factor scales everything the point reflects (Bsdf::tint), after the cache.
+      const Bsdf* bsdf = pts[i].active ? ctx_.scene.bsdfs[pts[i].hit.bsdf].get() : nullptr;
+      if (bsdf && bsdf->tinted()) out[i] *= bsdf->tint(pts[i].hit.uv, pts[i].wo);
+    }
+  });
 }
 
-void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color>& out, std::vector<LookupAov>* aov,
+void CacheEngine::indirect(PointView pts, std::vector<Color>& out, std::vector<LookupAov>* aov,
                            float relaxedScale) {
   out.assign(pts.size(), Color(0.0f));
   if (aov) aov->assign(pts.size(), LookupAov{});
-  // Classify in parallel (technique and cache key per point), then group serially over the few
-  // distinct keys in point order: millions of record-ray hits pass through here in the fill.
+  // Classify in parallel (technique and cache key per point), then group by the few distinct keys
+  // in point order (groupByKey): millions of record-ray hits pass through here in the fill.
   std::vector<Technique> tech(pts.size(), Technique::None);
   std::vector<CacheKey> keys(pts.size());
   parallelFor(pts.size(), 4096, [&](size_t b, size_t e) {
@@ -163,29 +223,15 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
       if (isCached(tech[i])) keys[i] = keyFor(sp);
     }
   });
-  std::map<CacheKey, std::vector<size_t>> groups;
-  std::vector<size_t> sampled;
-  {
-    CacheKey lastKey{};
-    std::vector<size_t>* last = nullptr;
-    for (size_t i = 0; i < pts.size(); ++i) {
-      if (tech[i] == Technique::ImportanceSampling) sampled.push_back(i);
-      if (!isCached(tech[i])) continue;
-      if (!last || keys[i] < lastKey || lastKey < keys[i]) {
-        last = &groups[keys[i]];
-        lastKey = keys[i];
-      }
-      last->push_back(i);
-    }
-  }
+  const std::vector<size_t> sampled =
+      parallelSelect(pts.size(), [&](size_t i) { return tech[i] == Technique::ImportanceSampling; });
+  const std::map<CacheKey, std::vector<size_t>> groups = groupByKey(tech, keys);
   for (auto& group : groups) {
     // Named references, not a structured binding: C++17 lambdas cannot capture those (clang).
     const CacheKey& key = group.first;
     const std::vector<size_t>& idx = group.second;
-    std::vector<ShadePoint> sub(idx.size());
-    parallelFor(idx.size(), 4096, [&](size_t b, size_t e) {
-      for (size_t j = b; j < e; ++j) sub[j] = pts[idx[j]];
-    });
+    const ParallelArray<ShadePoint> copy = gather(pts, idx);
+    const PointView sub = idx.size() == pts.size() ? pts : PointView(copy);
     std::vector<Lookup> lookups;
     ensureCoverage(key, sub, lookups, nullptr, false, relaxedScale);
     std::vector<Color> L;
@@ -193,51 +239,66 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
     parallelFor(idx.size(), 4096, [&](size_t b, size_t e) {
       for (size_t j = b; j < e; ++j) out[idx[j]] = L[j];
     });
-    if (!aov) continue;
-    RadianceCache& cache = cacheFor(key);
-    for (size_t j = 0; j < idx.size(); ++j) {
-      LookupAov& a = (*aov)[idx[j]];
-      a.contributors = static_cast<int>(lookups[j].entries.size());
-      for (const auto& e : lookups[j].entries) {
-        const RecordInfo r = cache.info(static_cast<uint32_t>(e.record));
-        a.meanA += r.a;
-        a.meanRadiusPx += r.a * r.R / footprint(r.p);
-      }
-      if (a.contributors > 0) {
-        a.meanA /= a.contributors;
-        a.meanRadiusPx /= a.contributors;
-      }
+    if (aov) {
+      const RadianceCache& cache = cacheFor(key);
+      parallelFor(idx.size(), 1024, [&](size_t b, size_t e) {
+        const RadianceCache::Reader reader = cache.reader();
+        for (size_t j = b; j < e; ++j) {
+          LookupAov& a = (*aov)[idx[j]];
+          a.contributors = static_cast<int>(lookups[j].entries.size());
+          for (const auto& c : lookups[j].entries) {
+            const RecordInfo& r = reader.info(static_cast<uint32_t>(c.record));
+            a.meanA += r.a;
+            a.meanRadiusPx += r.a * r.R / footprint(r.p);
+          }
+          if (a.contributors > 0) {
+            a.meanA /= a.contributors;
+            a.meanRadiusPx /= a.contributors;
+          }
+        }
+      });
     }
+    releaseLookups(lookups);
   }
   if (!sampled.empty()) {
-    std::vector<ShadePoint> sub(sampled.size());
-    parallelFor(sampled.size(), 4096, [&](size_t b, size_t e) {
-      for (size_t j = b; j < e; ++j) sub[j] = pts[sampled[j]];
-    });
+    const ParallelArray<ShadePoint> copy = gather(pts, sampled);
+    const PointView sub = sampled.size() == pts.size() ? pts : PointView(copy);
     std::vector<Color> L;
     // Paths continued below a sharp surface keep the relaxed lookups of the final pass.
     continuePaths(sub, L, relaxedScale);
-    for (size_t j = 0; j < sampled.size(); ++j) out[sampled[j]] = L[j];
+    parallelFor(sampled.size(), 4096, [&](size_t b, size_t e) {
+      for (size_t j = b; j < e; ++j) out[sampled[j]] = L[j];
+    });
   }
 }
 
 void CacheEngine::fill(const std::vector<ShadePoint>& pts, const std::vector<float>& baseLum, bool adaptive) {
-  std::map<CacheKey, std::vector<size_t>> groups;
-  for (size_t i = 0; i < pts.size(); ++i)
-    if (isCached(technique(pts[i])) && withinMaxDepth(maxDepth_, pts[i].depth + 2)) groups[keyFor(pts[i])].push_back(i);
-  for (auto& [key, idx] : groups) {
-    std::vector<ShadePoint> sub(idx.size());
-    std::vector<float> lum(idx.size(), 0.0f);
-    for (size_t j = 0; j < idx.size(); ++j) {
-      sub[j] = pts[idx[j]];
-      if (idx[j] < baseLum.size()) lum[j] = baseLum[idx[j]];
+  std::vector<Technique> tech(pts.size(), Technique::None);
+  std::vector<CacheKey> keys(pts.size());
+  parallelFor(pts.size(), 4096, [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      const Technique t = technique(pts[i]);
+      if (!isCached(t) || !withinMaxDepth(maxDepth_, pts[i].depth + 2)) continue;
+      tech[i] = t;
+      keys[i] = keyFor(pts[i]);
     }
+  });
+  for (const auto& group : groupByKey(tech, keys)) {
+    const std::vector<size_t>& idx = group.second;
+    const ParallelArray<ShadePoint> copy = gather(pts, idx);
+    const PointView sub = idx.size() == pts.size() ? PointView(pts) : PointView(copy);
+    std::vector<float> lum(idx.size(), 0.0f);
+    parallelFor(idx.size(), 4096, [&](size_t b, size_t e) {
+      for (size_t j = b; j < e; ++j)
+        if (idx[j] < baseLum.size()) lum[j] = baseLum[idx[j]];
+    });
     std::vector<Lookup> lookups;
-    ensureCoverage(key, sub, lookups, &lum, adaptive);
+    ensureCoverage(group.first, sub, lookups, &lum, adaptive);
+    releaseLookups(lookups);
   }
 }
 
-void CacheEngine::lookUp(RadianceCache& cache, const std::vector<ShadePoint>& pts, const std::vector<size_t>& todo,
+void CacheEngine::lookUp(RadianceCache& cache, PointView pts, const std::vector<size_t>& todo,
                          std::vector<Lookup>& lookups, float relaxedScale) {
   parallelFor(todo.size(), 64, [&](size_t b, size_t e) {
     const RadianceCache::Reader reader = cache.reader();
@@ -268,27 +329,30 @@ std::vector<size_t> CacheEngine::pointsToRecheck(const std::vector<Lookup>& look
   if (relaxedScale > 1.0f) {
     todo.resize(n);
     for (size_t i = 0; i < n; ++i) todo[i] = i;
-  } else if (!shrunk.empty())
-    for (size_t i = 0; i < n; ++i)
+  } else if (!shrunk.empty()) {
+    todo = parallelSelect(n, [&](size_t i) {
       for (const RcContribution& c : lookups[i].entries)
-        if (std::binary_search(shrunk.begin(), shrunk.end(), static_cast<uint32_t>(c.record))) {
-          todo.push_back(i);
-          break;
-        }
+        if (std::binary_search(shrunk.begin(), shrunk.end(), static_cast<uint32_t>(c.record))) return true;
+      return false;
+    });
+  }
   shrunk.clear();
   return todo;
 }
 
-std::vector<ShadePoint> CacheEngine::recordCandidates(const std::vector<ShadePoint>& pts,
-                                                      std::vector<size_t> uncovered, float sepPx) const {
-  // Deterministic shuffle (by the points' seeds) so candidates spread over the batch.
-  std::sort(uncovered.begin(), uncovered.end(), [&](size_t x, size_t y) {
-    const uint64_t hx = hashMix(pts[x].seed, kSaltCandidateOrder), hy = hashMix(pts[y].seed, kSaltCandidateOrder);
-    return hx != hy ? hx < hy : x < y;
+std::vector<ShadePoint> CacheEngine::recordCandidates(PointView pts,
+                                                      const std::vector<size_t>& uncovered, float sepPx) const {
+  // Deterministic shuffle (by the points' seeds) so candidates spread over the batch; the keys
+  // are hashed once each, in parallel, not twice per comparison.
+  std::vector<std::pair<uint64_t, size_t>> order(uncovered.size());
+  parallelFor(order.size(), 4096, [&](size_t b, size_t e) {
+    for (size_t j = b; j < e; ++j) order[j] = {hashMix(pts[uncovered[j]].seed, kSaltCandidateOrder), uncovered[j]};
   });
+  std::sort(order.begin(), order.end());
   RecordOctree accepted(lo_, hi_);
   std::vector<ShadePoint> cands;
-  for (size_t i : uncovered) {
+  for (const auto& keyed : order) {
+    const size_t i = keyed.second;
     const ShadePoint& sp = pts[i];
     bool near = false;
     accepted.query(sp.hit.p, [&](uint32_t id) {
@@ -307,7 +371,7 @@ std::vector<ShadePoint> CacheEngine::recordCandidates(const std::vector<ShadePoi
 
 // Rounds of: look up the points still to do; if all are covered, re-check those whose records
 // shrank and run the adaptive check; else place a batch of records at spread-out uncovered points.
-void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoint>& pts, std::vector<Lookup>& lookups,
+void CacheEngine::ensureCoverage(const CacheKey& key, PointView pts, std::vector<Lookup>& lookups,
                                  const std::vector<float>* baseLum, bool adaptive, float relaxedScale) {
   RadianceCache& cache = cacheFor(key);
   const size_t n = pts.size();
@@ -321,10 +385,8 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
   int adaptiveRounds = 0;
   bool created = false;
   std::vector<uint32_t> shrunk;  // records whose radius clamping lowered since the last check
-  std::vector<size_t> all;
   // Points off the float range (a hit on an overflowing sphere) cannot hold a record.
-  for (size_t i = 0; i < n; ++i)
-    if (isFinite(pts[i].hit.p)) all.push_back(i);
+  const std::vector<size_t> all = parallelSelect(n, [&](size_t i) { return isFinite(pts[i].hit.p); });
   std::vector<size_t> todo = all;
   // Each creation round covers at least the points its records were made at (radius_floor.h), so
   // the loop ends within about 2n rounds; the bound and the cancel check are the last resort.
@@ -332,9 +394,7 @@ void CacheEngine::ensureCoverage(const CacheKey& key, const std::vector<ShadePoi
   for (size_t round = 0; round < maxRounds && !(ctx_.cancel && ctx_.cancel->load(std::memory_order_relaxed));
        ++round) {
     lookUp(cache, pts, todo, lookups, relaxedScale);
-    std::vector<size_t> uncovered;
-    for (size_t i : todo)
-      if (!lookups[i].covered()) uncovered.push_back(i);
+    std::vector<size_t> uncovered = parallelSelectFrom(todo, [&](size_t i) { return !lookups[i].covered(); });
     if (uncovered.empty() && created) {
       created = false;
       todo = pointsToRecheck(lookups, shrunk, relaxedScale);
@@ -385,45 +445,43 @@ ProjectBatch CacheEngine::recordBatch(const CacheKey& key, const std::vector<Sha
   return rayBatch;
 }
 
-void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectBatch& rayBatch, std::vector<Hit>& hits) {
+void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectBatch& rayBatch,
+                                  ParallelArray<Hit>& hits) {
   const int M = rayBatch.M, N = rayBatch.N, S = M * N;
   const size_t total = cands.size() * S;
-  std::vector<Ray> rays(total);
-  hits.assign(total, Hit{});
-  parallelFor(cands.size(), 1, [&](size_t b0, size_t b1) {
-    for (size_t b = b0; b < b1; ++b) {
-      const ShadePoint& c = cands[b];
-      for (int j = 0; j < M; ++j)
-        for (int k = 0; k < N; ++k) {
-          const size_t s = static_cast<size_t>(j) * N + k;
-          const float ct = 1.0f - (j + rayBatch.pattern[2 * s]) / M;
-          const float st = std::sqrt(std::max(0.0f, 1.0f - ct * ct));
-          const float phi = 2.0f * kPi * (k + rayBatch.pattern[2 * s + 1]) / N + rayBatch.phi0[b];
-          const Vec3 local(st * std::cos(phi), st * std::sin(phi), ct);
-          rays[b * S + s] = Accel::spawnRay(c.hit, c.frame.toWorld(local));
-        }
-    }
+  // Ray s of record b: cell (j, k) = (s / N, s % N) of the stratified pattern, turned by the
+  // record's azimuth.
+  const ParallelArray<Ray> rays(total, [&](size_t i) {
+    const size_t b = i / S, s = i % S;
+    const ShadePoint& c = cands[b];
+    const int j = static_cast<int>(s) / N, k = static_cast<int>(s) % N;
+    const float ct = 1.0f - (j + rayBatch.pattern[2 * s]) / M;
+    const float st = std::sqrt(std::max(0.0f, 1.0f - ct * ct));
+    const float phi = 2.0f * kPi * (k + rayBatch.pattern[2 * s + 1]) / N + rayBatch.phi0[b];
+    const Vec3 local(st * std::cos(phi), st * std::sin(phi), ct);
+    return Accel::spawnRay(c.hit, c.frame.toWorld(local));
   });
-  parallelFor(total, 1024, [&](size_t b, size_t e) { ctx_.accel.intersect(rays.data() + b, hits.data() + b, e - b); });
+  hits = ParallelArray<Hit>(total);
+  parallelFor(total, 1024, [&](size_t b, size_t e) {
+    ctx_.accel.intersectBatch(rays.data() + b, hits.data() + b, e - b, BatchQuery::Packet16);
+  });
   stats_.recordRays += total;
   // The radiance arriving along each ray: the hit's outgoing radiance, shaded recursively.
-  std::vector<ShadePoint> next(total);
-  parallelFor(total, 1024, [&](size_t b, size_t e) {
-    for (size_t i = b; i < e; ++i) {
+  std::vector<Color> L;
+  {
+    const ParallelArray<ShadePoint> next(total, [&](size_t i) {
       const ShadePoint& c = cands[i / S];
-      next[i] = shadePointOf(hits[i], rays[i].d, c.depth + 1, c.level + 1, hashMix(c.seed, i % S, kSaltRecordRayHit));
+      ShadePoint sp = shadePointOf(hits[i], rays[i].d, c.depth + 1, c.level + 1, hashMix(c.seed, i % S, kSaltRecordRayHit));
       // The light samples at a record's S hits are one padded Sobol sequence (index = ray): like
       // the ray directions they are stratified over the record, so the record's estimate of
       // direct light at its neighbours converges faster than with independent samples.
-      next[i].ldSeed = static_cast<uint32_t>(hashMix(c.seed, kSaltRecordLightSequence));
-      next[i].ldIndex = static_cast<uint32_t>(i % S);
-      next[i].ldDim = kRecordLowDiscrepancyFirstDim;
-    }
-  });
-  std::vector<Color> L;
-  radianceOut(next, L);
-  next.clear();
-  next.shrink_to_fit();
+      sp.ldSeed = static_cast<uint32_t>(hashMix(c.seed, kSaltRecordLightSequence));
+      sp.ldIndex = static_cast<uint32_t>(i % S);
+      sp.ldDim = kRecordLowDiscrepancyFirstDim;
+      return sp;
+    });
+    radianceOut(next, L);
+  }
   rayBatch.radiance.resize(total * 3);
   rayBatch.distance.resize(total);
   const bool carriesEnvironment = envSplit_->active();
@@ -493,7 +551,7 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
   const int B = static_cast<int>(cands.size());
   ProjectBatch rayBatch = recordBatch(key, cands);
   const int S = rayBatch.M * rayBatch.N;
-  std::vector<Hit> hits;
+  ParallelArray<Hit> hits;
   traceRecordRays(cands, rayBatch, hits);
   ProjectResult projected;
   auto t0 = SteadyClock::now();
@@ -505,10 +563,13 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
     projected.gradB.assign(K * B, 0.0f);
   }
   std::vector<RecordInfo> infos(B);
+  parallelFor(static_cast<size_t>(B), 16, [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b)
+      infos[b] = clampRecord(key, cands[b], &hits[b * S], S, rayBatch.minDistance, &projected.lambda[K * b],
+                             &projected.gradT[K * b], &projected.gradB[K * b]);
+  });
   for (int b = 0; b < B; ++b) {
     stats_.droppedSamples += projected.dropped.empty() ? 0 : static_cast<uint64_t>(projected.dropped[b]);
-    infos[b] = clampRecord(key, cands[b], &hits[static_cast<size_t>(b) * S], S, rayBatch.minDistance, &projected.lambda[K * b],
-                           &projected.gradT[K * b], &projected.gradB[K * b]);
     if (key.level == 0 && cands[b].pixel >= 0) recordPixels_.push_back(cands[b].pixel);
   }
   WorldCopies world;
@@ -523,7 +584,7 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
   return shrunk;
 }
 
-void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<ShadePoint>& pts,
+void CacheEngine::interpolateAndShade(const CacheKey& key, PointView pts,
                                       const std::vector<Lookup>& lookups, std::vector<Color>& out) {
   RadianceCache& cache = cacheFor(key);
   out.assign(pts.size(), Color(0.0f));
@@ -552,24 +613,27 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
       stats_.lambertianLookups += count;
     });
     stats_.interpolation_s += secondsSince(t0);
-    std::vector<size_t> rest;
-    for (size_t i = 0; i < pts.size(); ++i)
-      if (!lambertian[i]) rest.push_back(i);
+    const std::vector<size_t> rest = parallelSelect(pts.size(), [&](size_t i) { return !lambertian[i]; });
     if (rest.empty()) return;
     if (rest.size() < pts.size()) {
-      std::vector<ShadePoint> subPts(rest.size());
+      const ParallelArray<ShadePoint> subPts = gather(pts, rest);
       std::vector<Lookup> subLookups(rest.size());
-      for (size_t j = 0; j < rest.size(); ++j) subPts[j] = pts[rest[j]], subLookups[j] = lookups[rest[j]];
+      parallelFor(rest.size(), 1024, [&](size_t b, size_t e) {
+        for (size_t j = b; j < e; ++j) subLookups[j] = lookups[rest[j]];
+      });
       std::vector<Color> subOut;
       interpolateWithKernels(key, subPts, subLookups, subOut);
-      for (size_t j = 0; j < rest.size(); ++j) out[rest[j]] = subOut[j];
+      releaseLookups(subLookups);
+      parallelFor(rest.size(), 4096, [&](size_t b, size_t e) {
+        for (size_t j = b; j < e; ++j) out[rest[j]] = subOut[j];
+      });
       return;
     }
   }
   interpolateWithKernels(key, pts, lookups, out);
 }
 
-void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<ShadePoint>& pts,
+void CacheEngine::interpolateWithKernels(const CacheKey& key, PointView pts,
                                          const std::vector<Lookup>& lookups, std::vector<Color>& out) {
   RadianceCache& cache = cacheFor(key);
   out.assign(pts.size(), Color(0.0f));
@@ -603,8 +667,14 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
     const auto t0 = SteadyClock::now();
     backend_.interpolate(interp, part);
     stats_.interpolation_s += secondsSince(t0);
-    for (size_t j = 0; j < idx.size(); ++j)
-      std::copy(part.begin() + K * j, part.begin() + K * (j + 1), lambda.begin() + K * idx[j]);
+    if (lambda.empty()) {  // the chunk's only frame mode: idx is the whole chunk, in order
+      lambda = std::move(part);
+      return;
+    }
+    parallelFor(idx.size(), 256, [&](size_t b, size_t e) {
+      for (size_t j = b; j < e; ++j)
+        std::copy(part.begin() + K * j, part.begin() + K * (j + 1), lambda.begin() + K * idx[j]);
+    });
   };
   for (size_t begin = 0; begin < pts.size(); begin += kChunk) {
     const size_t count = std::min(kChunk, pts.size() - begin);
@@ -618,15 +688,16 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, const std::vector<
       (record ? recordIdx : worldIdx).push_back(static_cast<uint32_t>(j));
     }
     stats_.recordFrameLookups += recordIdx.size();
-    std::vector<float> lambda(K * count, 0.0f);
+    std::vector<float> lambda;
+    if (!worldIdx.empty() && !recordIdx.empty()) lambda.assign(K * count, 0.0f);
     interpolate(begin, worldIdx, true, lambda);
     interpolate(begin, recordIdx, false, lambda);
-    shadeLambda(pts, begin, count, key.order, lambda, out, nullptr);
+    shadeLambda(pts, begin, count, key.order, std::move(lambda), out, nullptr);
   }
 }
 
-void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, size_t count, int order,
-                              const std::vector<float>& lambda, std::vector<Color>& out,
+void CacheEngine::shadeLambda(PointView pts, size_t begin, size_t count, int order,
+                              std::vector<float> lambda, std::vector<Color>& out,
                               const std::vector<size_t>* outIndex) {
   const size_t n2 = static_cast<size_t>(order) * order;
   auto point = [&](size_t j) -> const ShadePoint& { return pts[outIndex ? (*outIndex)[j] : begin + j]; };
@@ -663,7 +734,7 @@ void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, 
   BrdfDotBatch dotBatch;
   dotBatch.order = order;
   dotBatch.points = static_cast<int>(count);
-  dotBatch.lambda = lambda;
+  dotBatch.lambda = std::move(lambda);
   dotBatch.wo.resize(3 * count);
   dotBatch.material.resize(count);
   for (size_t j = 0; j < count; ++j) {
@@ -704,17 +775,20 @@ void CacheEngine::addRecords(const RadianceCache& cache, const std::vector<uint3
     interp.gradB.resize(K * ids.size());
   }
   if (!world) interp.recordFrames.resize(9 * ids.size());
-  for (size_t r = 0; r < ids.size(); ++r) {
-    cache.copyCoefficients(ids[r], world, &interp.lambda[K * r], interp.gradients ? &interp.gradT[K * r] : nullptr,
-                           interp.gradients ? &interp.gradB[K * r] : nullptr);
-    if (!world) frameRows(cache.info(ids[r]).frame, &interp.recordFrames[9 * r]);
-  }
+  parallelFor(ids.size(), 64, [&](size_t b, size_t e) {
+    const RadianceCache::Reader reader = cache.reader();
+    for (size_t r = b; r < e; ++r) {
+      reader.copyCoefficients(ids[r], world, &interp.lambda[K * r], interp.gradients ? &interp.gradT[K * r] : nullptr,
+                              interp.gradients ? &interp.gradB[K * r] : nullptr);
+      if (!world) frameRows(reader.info(ids[r]).frame, &interp.recordFrames[9 * r]);
+    }
+  });
 }
 
 // Each contribution (point i, record) of the points covered by two or more records, as the
 // record alone predicts the point's outgoing radiance (its Λ moved by its gradient, rotated,
 // dotted with the BRDF).
-std::vector<Color> CacheEngine::recordPredictions(const CacheKey& key, const std::vector<ShadePoint>& pts,
+std::vector<Color> CacheEngine::recordPredictions(const CacheKey& key, PointView pts,
                                                   const std::vector<size_t>& pairPoint,
                                                   const std::vector<RcContribution>& pairEntry) {
   RadianceCache& cache = cacheFor(key);
@@ -739,7 +813,7 @@ std::vector<Color> CacheEngine::recordPredictions(const CacheKey& key, const std
     stats_.interpolation_s += secondsSince(t0);
     std::vector<size_t> idx(pairPoint.begin() + begin, pairPoint.begin() + begin + count);
     std::vector<Color> part(count);
-    shadeLambda(pts, 0, count, key.order, lambda, part, &idx);
+    shadeLambda(pts, 0, count, key.order, std::move(lambda), part, &idx);
     std::copy(part.begin(), part.end(), pred.begin() + begin);
   }
   return pred;
@@ -748,7 +822,7 @@ std::vector<Color> CacheEngine::recordPredictions(const CacheKey& key, const std
 // EGSR 2006: at a point covered by several records, each record's own prediction should agree; a
 // disagreement above the Weber threshold would show as a visible seam, so the most deviant record
 // gets a smaller a_i.
-bool CacheEngine::adaptiveCheck(const CacheKey& key, const std::vector<ShadePoint>& pts,
+bool CacheEngine::adaptiveCheck(const CacheKey& key, PointView pts,
                                 const std::vector<Lookup>& lookups, const std::vector<float>& baseLum) {
   std::vector<size_t> pairPoint;
   std::vector<RcContribution> pairEntry;
@@ -812,10 +886,10 @@ bool CacheEngine::shrinkRecords(const CacheKey& key, const std::map<uint32_t, fl
   return changed;
 }
 
-void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<Color>& out, float relaxedScale) {
+void CacheEngine::continuePaths(PointView pts, std::vector<Color>& out, float relaxedScale) {
   const size_t n = pts.size();
   out.assign(n, Color(0.0f));
-  std::vector<Ray> rays(n);
+  ParallelArray<Ray> rays(n);
   std::vector<Color> weight(n, Color(0.0f));
   std::vector<float> pdf(n, 0.0f);
   std::vector<char> alive(n, 0), delta(n, 0);
@@ -841,25 +915,25 @@ void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<
       rays[i] = Accel::spawnRay(sp.hit, sp.frame.toWorld(s->wi));
     }
   });
-  std::vector<size_t> live;
-  for (size_t i = 0; i < n; ++i)
-    if (alive[i]) live.push_back(i);
+  const std::vector<size_t> live = parallelSelect(n, [&](size_t i) { return alive[i] != 0; });
   if (live.empty()) return;
-  std::vector<Ray> liveRays(live.size());
-  for (size_t j = 0; j < live.size(); ++j) liveRays[j] = rays[live[j]];
-  std::vector<Hit> hits(live.size());
-  parallelFor(live.size(), 1024, [&](size_t b, size_t e) { ctx_.accel.intersect(liveRays.data() + b, hits.data() + b, e - b); });
+  const ParallelArray<Ray> liveRays(live.size(), [&](size_t j) { return rays[live[j]]; });
+  ParallelArray<Hit> hits(live.size());
+  parallelFor(live.size(), 1024, [&](size_t b, size_t e) {
+    ctx_.accel.intersectBatch(liveRays.data() + b, hits.data() + b, e - b, BatchQuery::Packet16);
+  });
   stats_.pathRays += live.size();
-  std::vector<ShadePoint> next(live.size());
-  for (size_t j = 0; j < live.size(); ++j) {
-    const ShadePoint& sp = pts[live[j]];
-    const Hit& h = hits[j];
-    next[j] = shadePointOf(h, liveRays[j].d, sp.depth + 1, sp.level + (delta[live[j]] ? 0 : 1),
-                           hashMix(sp.seed, 0xC0471));
-    next[j].pixel = sp.pixel;
-  }
   std::vector<Color> L;
-  radianceOut(next, L, relaxedScale);
+  {
+    const ParallelArray<ShadePoint> next(live.size(), [&](size_t j) {
+      const ShadePoint& sp = pts[live[j]];
+      ShadePoint hit = shadePointOf(hits[j], liveRays[j].d, sp.depth + 1, sp.level + (delta[live[j]] ? 0 : 1),
+                                    hashMix(sp.seed, 0xC0471));
+      hit.pixel = sp.pixel;
+      return hit;
+    });
+    radianceOut(next, L, relaxedScale);
+  }
   // The continuation ray is the point's MIS BSDF sample too (continuesPath): add the emitter it
   // found, weighted against the point's light samples.
   parallelFor(live.size(), 1024, [&](size_t b, size_t e) {

@@ -66,11 +66,11 @@ class CacheEngine {
               const CameraModel& camera, int maxDepth, int rrDepth, Vec3 sceneLo, Vec3 sceneHi);
 
   // L_o(p, ω_o) without p's own emission. out.size() == points.size().
-  void radianceOut(const std::vector<ShadePoint>& points, std::vector<Color>& out, float relaxedScale = 1.0f);
+  void radianceOut(PointView points, std::vector<Color>& out, float relaxedScale = 1.0f);
   // Indirect part only; `aov` (optional, same size) receives lookup details.
   // relaxedScale > 1 (the final pass): a point no record covers at a_i may use the records that
   // cover it at relaxedScale·a_i before a new record is made for it.
-  void indirect(const std::vector<ShadePoint>& points, std::vector<Color>& out, std::vector<LookupAov>* aov = nullptr,
+  void indirect(PointView points, std::vector<Color>& out, std::vector<LookupAov>* aov = nullptr,
                 float relaxedScale = 1.0f);
   // Fill pass at level 0: make the caches cover `points`; with adaptive caching, `baseLum`
   // (luminance of the points' direct light + emission) scales the Weber threshold.
@@ -126,34 +126,34 @@ class CacheEngine {
   std::vector<int> recordPixels_;
   uint64_t recordCounter_ = 0;
 
-  void ensureCoverage(const CacheKey& key, const std::vector<ShadePoint>& pts, std::vector<Lookup>& lookups,
+  void ensureCoverage(const CacheKey& key, PointView pts, std::vector<Lookup>& lookups,
                       const std::vector<float>* baseLum, bool adaptive, float relaxedScale = 1.0f);
   // The steps of ensureCoverage: look up points `todo`; which points to look up again after
   // insertions shrank records; which uncovered points become the next batch's candidates.
-  void lookUp(RadianceCache& cache, const std::vector<ShadePoint>& pts, const std::vector<size_t>& todo,
+  void lookUp(RadianceCache& cache, PointView pts, const std::vector<size_t>& todo,
               std::vector<Lookup>& lookups, float relaxedScale);
   std::vector<size_t> pointsToRecheck(const std::vector<Lookup>& lookups, std::vector<uint32_t>& shrunk,
                                       float relaxedScale);
-  std::vector<ShadePoint> recordCandidates(const std::vector<ShadePoint>& pts, std::vector<size_t> uncovered,
+  std::vector<ShadePoint> recordCandidates(PointView pts, const std::vector<size_t>& uncovered,
                                            float sepPx) const;
   // Returns the ids of older records whose radius the new ones' neighbour clamping lowered.
   std::vector<uint32_t> buildRecords(const CacheKey& key, const std::vector<ShadePoint>& cands);
   // The steps of buildRecords: the projection batch of the candidates (stratified ray pattern,
   // per-record azimuth), their rays traced and shaded into it, one record's radius clamped.
   ProjectBatch recordBatch(const CacheKey& key, const std::vector<ShadePoint>& cands);
-  void traceRecordRays(const std::vector<ShadePoint>& cands, ProjectBatch& rayBatch, std::vector<Hit>& hits);
+  void traceRecordRays(const std::vector<ShadePoint>& cands, ProjectBatch& rayBatch, ParallelArray<Hit>& hits);
   // R_i from the harmonic mean distance of its S ray hits, bounded by the gradient limit and
   // r_min/r_max; scales the record's gradients (in place) when r_min overrides the limit.
   RecordInfo clampRecord(const CacheKey& key, const ShadePoint& cand, const Hit* hits, int S, float minDistance,
                          float* lambda, float* gradT, float* gradB) const;
-  void interpolateAndShade(const CacheKey& key, const std::vector<ShadePoint>& pts, const std::vector<Lookup>& lookups,
+  void interpolateAndShade(const CacheKey& key, PointView pts, const std::vector<Lookup>& lookups,
                            std::vector<Color>& out);
   // The batched path of interpolateAndShade: interpolate and brdf_dot kernels.
-  void interpolateWithKernels(const CacheKey& key, const std::vector<ShadePoint>& pts,
+  void interpolateWithKernels(const CacheKey& key, PointView pts,
                               const std::vector<Lookup>& lookups, std::vector<Color>& out);
-  bool adaptiveCheck(const CacheKey& key, const std::vector<ShadePoint>& pts, const std::vector<Lookup>& lookups,
+  bool adaptiveCheck(const CacheKey& key, PointView pts, const std::vector<Lookup>& lookups,
                      const std::vector<float>& baseLum);
-  std::vector<Color> recordPredictions(const CacheKey& key, const std::vector<ShadePoint>& pts,
+  std::vector<Color> recordPredictions(const CacheKey& key, PointView pts,
                                        const std::vector<size_t>& pairPoint, const std::vector<RcContribution>& pairEntry);
   // Lowers a_i of records (id → new a_i) within their floors; true when any changed.
   bool shrinkRecords(const CacheKey& key, const std::map<uint32_t, float>& shrink);
@@ -161,9 +161,9 @@ class CacheEngine {
   // coefficients (and, in record-frame mode, frames) of records `ids` of `cache`.
   InterpolateBatch interpolateBatch(int order, bool world, size_t points) const;
   void addRecords(const RadianceCache& cache, const std::vector<uint32_t>& ids, InterpolateBatch& interp) const;
-  void continuePaths(const std::vector<ShadePoint>& pts, std::vector<Color>& out, float relaxedScale);
-  void shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, size_t count, int order,
-                   const std::vector<float>& lambda, std::vector<Color>& out, const std::vector<size_t>* outIndex);
+  void continuePaths(PointView pts, std::vector<Color>& out, float relaxedScale);
+  void shadeLambda(PointView pts, size_t begin, size_t count, int order,
+                   std::vector<float> lambda, std::vector<Color>& out, const std::vector<size_t>* outIndex);
 };
 
 }  // namespace rc

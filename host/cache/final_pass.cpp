@@ -6,6 +6,7 @@
 #include "cache/rng_salts.h"
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/parallel_select.h"
 #include "render/direct_light.h"
 #include "render/render_loop.h"
 #include "scene/integrator_params.h"
@@ -52,7 +53,7 @@ void generateCameraRays(const RcacheRun& run, const Film& film, int y0, const Sa
 
 // The pixel's earlier representative whose lookup sample `sp` may share (same surface, normals
 // agreeing, fewer than shareGroup users so far; its count is raised), or `self`.
-uint32_t sharedRepresentative(const std::vector<Primary>& prim, const std::vector<uint32_t>& pixelReps,
+uint32_t sharedRepresentative(const ParallelArray<Primary>& prim, const std::vector<uint32_t>& pixelReps,
                               std::vector<int>& repShares, int shareGroup, const ShadePoint& sp, uint32_t self) {
   for (size_t k = 0; k < pixelReps.size(); ++k) {
     const uint32_t r = pixelReps[k];
@@ -140,13 +141,12 @@ void FinalPass::shadeSamples(int y0, const SampleRange* ranges, size_t pixels, T
   traceAndLight(y0, ranges, offset, active, s);
   cameraRays_ += n;
   // Representatives in sample order (the order is what makes the image independent of threads).
+  const std::vector<size_t> reps = parallelSelect(n, [&](size_t i) { return s.rep[i] == i; });
   std::vector<size_t> slot(n, 0);
-  std::vector<ShadePoint> repPts;
-  for (size_t i = 0; i < n; ++i)
-    if (s.rep[i] == i) {
-      slot[i] = repPts.size();
-      repPts.push_back(s.prim[i].sp);
-    }
+  const ParallelArray<ShadePoint> repPts(reps.size(), [&](size_t j) {
+    slot[reps[j]] = j;
+    return s.prim[reps[j]].sp;
+  });
   std::vector<Color> repIndirect;
   std::vector<LookupAov> repAov;
   run_.engine.indirect(repPts, repIndirect, &repAov, kFinalRelaxedScale);
@@ -168,7 +168,7 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
   // √spp of one per sample while that error falls with spp.
   const int shareGroup = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(std::max(1, run_.spp)))));
   const size_t n = offset.back();
-  s.prim.resize(n);
+  s.prim = ParallelArray<Primary>(n);
   s.direct.assign(n, Color(0.0f));
   s.sampleIndex.resize(n);
   s.rep.resize(n);

@@ -51,7 +51,7 @@ class FinalPass {
  private:
   // A sample's primary hit, direct light, and the representative whose lookup it uses.
   struct Samples {
-    std::vector<Primary> prim;
+    ParallelArray<Primary> prim;
     std::vector<Color> direct;
     std::vector<int> sampleIndex;
     std::vector<uint32_t> rep;

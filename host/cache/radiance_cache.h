@@ -67,6 +67,10 @@ class RadianceCache {
     Color cosineIrradiance(const Lookup& lk, const Vec3& n, bool gradients) const {
       return cache_.cosineIrradianceLocked(lk, n, gradients);
     }
+    const RecordInfo& info(uint32_t id) const { return cache_.infos_[id]; }
+    void copyCoefficients(uint32_t id, bool world, float* lambda, float* gradT, float* gradB) const {
+      cache_.copyCoefficientsLocked(id, world, lambda, gradT, gradB);
+    }
 
    private:
     const RadianceCache& cache_;
@@ -116,6 +120,7 @@ class RadianceCache {
   std::vector<uint8_t> skipped_;  // setSkipped's mask (shorter than infos_ or empty)
   void lookupLocked(const Vec3& p, const Vec3& n, Lookup& out, bool brute, float scale = 1.0f) const;
   Color cosineIrradianceLocked(const Lookup& lk, const Vec3& n, bool gradients) const;
+  void copyCoefficientsLocked(uint32_t id, bool world, float* lambda, float* gradT, float* gradB) const;
 };
 
 }  // namespace rc

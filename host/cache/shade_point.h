@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "core/frame.h"
+#include "core/parallel_array.h"
 #include "core/rng.h"
 #include "geometry/accel.h"
 
@@ -26,6 +27,9 @@ struct ShadePoint {
   uint32_t ldSeed = 0, ldIndex = 0, ldDim = 0;
   bool active = false;   // false: nothing to shade (miss, no BSDF, back of a one-sided BSDF)
 };
+
+// Read-only points of a batch, held in a std::vector or a ParallelArray.
+using PointView = ArrayView<ShadePoint>;
 
 // The RNG of a shade point's sampling decisions, stream `stream`: PCG, after the rest of the
 // pixel sample's low-discrepancy dimensions where the point has them.

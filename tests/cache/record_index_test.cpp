@@ -6,6 +6,7 @@
 #include "cache/radiance_cache.h"
 #include "cache/record_octree.h"
 #include "cache/record_weights.h"
+#include "core/parallel.h"
 #include "core/rng.h"
 
 namespace rc {
@@ -143,6 +144,57 @@ TEST(RecordOctree, EqualsBruteForceOnRandomRecords) {
   }
   EXPECT_GT(total, 2000u);  // the test exercises real overlaps, not empty lookups
   EXPECT_GT(totalRelaxed, total);  // relaxed lookups reach more records
+}
+
+// Neighbour clamping of batches (RadianceCache::insert finds candidates among the existing records
+// in parallel and among the batch in its serial pass) equals the rule applied record by record with
+// brute-force neighbours, and does not depend on the thread count.
+TEST(NeighbourClamping, BatchesEqualBruteForceForAnyThreadCount) {
+  Rng rng(11);
+  std::vector<std::vector<RecordInfo>> batches(4);
+  for (auto& batch : batches)
+    for (int i = 0; i < 300; ++i) {
+      RecordInfo r;
+      r.p = Vec3(rng.nextFloat() * 2 - 0.5f, rng.nextFloat() * 2 - 0.5f, rng.nextFloat() * 0.1f);
+      r.frame = Frame::fromNormal(glm::normalize(Vec3(rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f, 0.6f)));
+      r.R = std::pow(10.0f, rng.nextFloat() * 2 - 2.0f);
+      r.a = 0.5f + rng.nextFloat();
+      batch.push_back(r);
+    }
+  // Reference: every record in turn against all earlier ones (ARCHITECTURE.md §Conventions order).
+  std::vector<RecordInfo> ref;
+  for (const auto& batch : batches)
+    for (RecordInfo r : batch) {
+      std::vector<size_t> with;
+      for (size_t q = 0; q < ref.size(); ++q)
+        if (glm::dot(ref[q].frame.n, r.frame.n) > 0.0f &&
+            glm::length(ref[q].p - r.p) <= ref[q].a * ref[q].R + r.a * r.R)
+          with.push_back(q);
+      for (size_t q : with) {
+        float unused = ref[q].R;
+        clampNeighbourRadii(r.p, r.R, ref[q].p, unused);
+      }
+      for (size_t q : with) {
+        float rNew = r.R;
+        clampNeighbourRadii(r.p, rNew, ref[q].p, ref[q].R);
+      }
+      ref.push_back(r);
+    }
+  size_t clamped = 0;
+  for (size_t i = 0, k = 0; i < batches.size(); ++i)
+    for (size_t j = 0; j < batches[i].size(); ++j, ++k) clamped += ref[k].R < batches[i][j].R ? 1 : 0;
+  EXPECT_GT(clamped, 100u);  // the batches overlap: clamping really happens
+  for (int threads : {1, 3}) {
+    setThreadCount(threads);
+    RadianceCache cache(1, Vec3(0.0f), Vec3(1.0f));
+    for (const auto& batch : batches) {
+      const std::vector<float> z(3 * batch.size(), 0.0f), none;
+      cache.insert(batch, z, z, z, none, none, none);
+    }
+    ASSERT_EQ(cache.size(), ref.size());
+    for (size_t k = 0; k < ref.size(); ++k) ASSERT_EQ(cache.info(static_cast<uint32_t>(k)).R, ref[k].R) << k;
+  }
+  setThreadCount(0);
 }
 
 }  // namespace
