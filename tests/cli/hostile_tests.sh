@@ -184,5 +184,19 @@ sed 's|<integrator type="path"><integer name="max_depth" value="4"/></integrator
   "$DATA/tiny.xml" > bad_param.xml
 expect_refusal rcache_param_file_line "bad_param.xml:7: <integrator type=\"rcache\">: parameter 'a'" 20 -- bad_param.xml --device cpu -o bp.exr
 
+# --- 7. Thin films: records deeper than the primary level follow the square film of equal pixel
+# count, not the strip's tiny pixels (a 16384×1 film made 120× the square film's records and ran
+# for minutes). Their count may not exceed twice the 128×128 film's (plus a few).
+sed 's|<integer name="width" value="$res"/><integer name="height" value="$res"/>|<integer name="width" value="$w"/><integer name="height" value="$h"/>|; s|<default name="res" value="16"/>|<default name="w" value="16"/><default name="h" value="16"/>|' \
+  "$DATA/tiny.xml" > wh.xml
+secondary_records() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(d['records'] - d['records_primary'])" "$1"; }
+expect_renders film_128x128 60 -- wh.xml "${RCACHE[@]}" -D fallback=false -D w=128 -D h=128 --spp 1 -o square.exr --stats square.json
+for wh in 16384x1 8192x2; do
+  expect_renders "film_$wh" 60 -- wh.xml "${RCACHE[@]}" -D fallback=false -D w=${wh%x*} -D h=${wh#*x} --spp 1 -o thin_$wh.exr --stats thin_$wh.json
+  sq=$(secondary_records square.json 2>/dev/null); th=$(secondary_records thin_$wh.json 2>/dev/null)
+  if [ -n "$sq" ] && [ -n "$th" ] && [ "$th" -le $((2 * sq + 8)) ]; then pass "thin_film_records_$wh"
+  else fail "thin_film_records_$wh" "secondary records: $th on $wh, $sq on 128x128"; fi
+done
+
 echo "$fails failure(s)"
 [ $fails -eq 0 ]
