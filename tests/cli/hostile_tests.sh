@@ -16,7 +16,8 @@ fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
 # bounded SECONDS -- command...: runs with a 3 GB address-space limit and a wall-clock limit.
 bounded() {
   local secs=$1; shift 2
-  ( ulimit -v 3000000; exec timeout "$secs" "$@" )
+  # (-k: a render stuck inside one pixel would outlive the SIGTERM that asks it to stop)
+  ( ulimit -v 3000000; exec timeout -k 5 "$secs" "$@" )
 }
 # Renders that must finish: exit 0, a finite image, within the limits.
 expect_renders() {
@@ -197,6 +198,40 @@ for wh in 16384x1 8192x2; do
   if [ -n "$sq" ] && [ -n "$th" ] && [ "$th" -le $((2 * sq + 8)) ]; then pass "thin_film_records_$wh"
   else fail "thin_film_records_$wh" "secondary records: $th on $wh, $sq on 128x128"; fi
 done
+
+# --- 3. Chains of <ref>s and <include>s are bounded with file:line, not a stack overflow or an
+# exponential blow-up (a BSDF evaluates every BSDF it nests, once per path through the refs).
+python3 - "$DATA/tiny.xml" <<'PY'
+import sys
+tiny = open(sys.argv[1]).read()
+head, tail = tiny.split("</scene>")[0], "</scene>"
+def blends(name, n, second):
+    lines = ['<bsdf type="diffuse" id="b0"/>']
+    for i in range(1, n + 1):
+        lines.append('<bsdf type="blendbsdf" id="b%d"><float name="weight" value="0.5"/><ref id="b%d"/>%s</bsdf>'
+                     % (i, i - 1, second.replace("PREV", "b%d" % (i - 1))))
+    lines.append('<shape type="sphere"><float name="radius" value="0.1"/><ref id="b%d"/></shape>' % n)
+    body = head.rstrip() + "\n" + "\n".join(lines) + "\n" + tail
+    open(name, "w").write(body)
+blends("ref_chain.xml", 300, '<bsdf type="diffuse"/>')
+blends("ref_laughs.xml", 40, '<ref id="PREV"/>')
+for i in range(100):
+    open("inc_%d.xml" % i, "w").write('<scene version="3.0.0">\n<include filename="inc_%d.xml"/>\n</scene>' % (i + 1))
+open("inc_100.xml", "w").write('<scene version="3.0.0"/>')
+open("include_chain.xml", "w").write(head.rstrip() + '\n<include filename="inc_0.xml"/>\n' + tail)
+for i in range(30):
+    open("twice_%d.xml" % i, "w").write('<scene version="3.0.0">\n<include filename="twice_%d.xml"/>\n<include filename="twice_%d.xml"/>\n</scene>' % (i + 1, i + 1))
+open("twice_30.xml", "w").write('<scene version="3.0.0"/>')
+open("include_laughs.xml", "w").write(head.rstrip() + '\n<include filename="twice_0.xml"/>\n' + tail)
+PY
+tiny_lines=$(($(wc -l < "$DATA/tiny.xml") - 1))
+expect_refusal ref_chain "ref_chain.xml:$((tiny_lines + 129)): <bsdf type=\"blendbsdf\" id=\"b128\">: BSDFs nested deeper than 128" 20 -- ref_chain.xml -o r.exr
+expect_refusal ref_billion_laughs "ref_laughs.xml:$((tiny_lines + 13)): <bsdf type=\"blendbsdf\" id=\"b12\">: one evaluation of this BSDF would visit more than 4096" 20 -- ref_laughs.xml -o r.exr
+expect_refusal include_chain "inc_62.xml:2: <include>: <include>s nested deeper than 64 files" 20 -- include_chain.xml -o i.exr
+expect_refusal include_billion_laughs "more than 10000 <include>s read in all" 20 -- include_laughs.xml -o i.exr
+# -D values naming each other, doubling each round: bounded like <default>s.
+dchain=(); for i in $(seq 1 40); do dchain+=(-D "p$i=\$p$((i - 1))\$p$((i - 1))"); done
+expect_refusal define_doubling_chain "tiny.xml:11: <integer name=\"width\">: attribute 'value': parameter substitution in '\$res' does not end within 16 rounds" 20 -- "$DATA/tiny.xml" -D p0=xxxxxxxx "${dchain[@]}" -D 'res=$p40' -o d.exr
 
 echo "$fails failure(s)"
 [ $fails -eq 0 ]
