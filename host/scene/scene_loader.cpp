@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <regex>
 
+#include "core/regular_file.h"
 #include "scene/loader.h"
 #include "scene/value_parsing.h"
 
@@ -128,7 +129,8 @@ void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     if (target.is_relative()) target = fs::path(file->path()).parent_path() / target;
     target = target.lexically_normal();
     const std::string at = whereOf(*file, node);
-    if (!fs::is_regular_file(target)) throw LocatedError(at + ": included file '" + target.string() + "' not found");
+    if (const std::string why = irregularFileReason(target.string()); !why.empty())
+      throw LocatedError(at + ": included file '" + target.string() + (why == "not found" ? "' not found" : "': " + why));
     const std::string canonical = fs::weakly_canonical(target).string();
     for (const std::string& s : includeStack_)
       if (s == canonical) throw LocatedError(at + ": include cycle: '" + target.string() + "' is already being read");

@@ -233,5 +233,21 @@ expect_refusal include_billion_laughs "more than 10000 <include>s read in all" 2
 dchain=(); for i in $(seq 1 40); do dchain+=(-D "p$i=\$p$((i - 1))\$p$((i - 1))"); done
 expect_refusal define_doubling_chain "tiny.xml:11: <integer name=\"width\">: attribute 'value': parameter substitution in '\$res' does not end within 16 rounds" 20 -- "$DATA/tiny.xml" -D p0=xxxxxxxx "${dchain[@]}" -D 'res=$p40' -o d.exr
 
+# --- 7. Every file rcache reads is refused when it is not a regular file (a FIFO would block
+# forever in open(), /dev/zero be read forever): scene parts, meshes, images, MERL tables, paths.
+for kind in serialized include envmap bitmap merl; do mkfifo "fifo_$kind"; done
+add_shape fifo_serialized.xml '<shape type="serialized"><string name="filename" value="fifo_serialized"/></shape>'
+add_shape fifo_include.xml '<include filename="fifo_include"/>'
+add_shape fifo_envmap.xml '<emitter type="envmap"><string name="filename" value="fifo_envmap"/></emitter>'
+add_shape fifo_bitmap.xml '<bsdf type="diffuse"><texture type="bitmap" name="reflectance"><string name="filename" value="fifo_bitmap"/></texture></bsdf>'
+add_shape fifo_merl.xml '<bsdf type="merl"><string name="filename" value="fifo_merl"/></bsdf>'
+expect_refusal serialized_is_fifo "fifo_serialized': not a regular file" 20 -- fifo_serialized.xml -o f.exr
+expect_refusal include_is_fifo "fifo_include.xml:31: <include>: included file 'fifo_include': not a regular file" 20 -- fifo_include.xml -o f.exr
+expect_refusal envmap_is_fifo "fifo_envmap': not a regular file" 20 -- fifo_envmap.xml -o f.exr
+expect_refusal bitmap_is_fifo "fifo_bitmap': not a regular file" 20 -- fifo_bitmap.xml -o f.exr
+expect_refusal merl_is_fifo "fifo_merl: not a regular file" 20 -- fifo_merl.xml -o f.exr
+mkfifo path_fifo.json
+expect_refusal camera_path_is_fifo "path_fifo.json': not a regular file" 20 -- "$DATA/tiny.xml" --frames 2 --camera-path path_fifo.json -o walk.exr
+
 echo "$fails failure(s)"
 [ $fails -eq 0 ]
