@@ -77,8 +77,8 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
 
   Film film(scene.film);
   const int spp = ctx.options.spp > 0 ? ctx.options.spp : scene.sampleCount;
-  // Before the fill, not after it: the final pass's smallest batch is one film row of spp samples.
-  checkFinalPassMemory(static_cast<size_t>(film.width()) * static_cast<size_t>(spp), film.width(), spp);
+  // Before the fill, not after it (final_pass_memory.h).
+  checkFinalPassMemory(film.width(), spp);
   const CameraModel camera(scene.camera, scene.film);
   Vec3 lo, hi;
   finiteSceneBounds(scene, lo, hi);
