@@ -103,7 +103,7 @@ std::string substituteParams(const std::string& text, const std::map<std::string
     if (!replaced) return current;  // only '$' signs not followed by a name are left
   }
   throw Error("parameter substitution in '" + text +
-              "' does not end within 16 rounds (a parameter refers to itself, or a chain of more than 16 names)");
+              "' does not terminate within 16 rounds (a parameter refers to itself, or a chain of more than 16 names)");
 }
 
 }  // namespace rc

@@ -237,7 +237,7 @@ expect_refusal include_chain "inc_62.xml:2: <include>: <include>s nested deeper 
 expect_refusal include_billion_laughs "more than 10000 <include>s read in all" 20 -- include_laughs.xml -o i.exr
 # -D values naming each other, doubling each round: bounded like <default>s.
 dchain=(); for i in $(seq 1 40); do dchain+=(-D "p$i=\$p$((i - 1))\$p$((i - 1))"); done
-expect_refusal define_doubling_chain "tiny.xml:11: <integer name=\"width\">: attribute 'value': parameter substitution in '\$res' does not end within 16 rounds" 20 -- "$DATA/tiny.xml" -D p0=xxxxxxxx "${dchain[@]}" -D 'res=$p40' -o d.exr
+expect_refusal define_doubling_chain "tiny.xml:11: <integer name=\"width\">: attribute 'value': parameter substitution in '\$res' does not terminate within 16 rounds" 20 -- "$DATA/tiny.xml" -D p0=xxxxxxxx "${dchain[@]}" -D 'res=$p40' -o d.exr
 
 # --- 7. Every file rcache reads is refused when it is not a regular file (a FIFO would block
 # forever in open(), /dev/zero be read forever): scene parts, meshes, images, MERL tables, paths.
