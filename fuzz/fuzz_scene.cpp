@@ -7,7 +7,7 @@
 //   mkdir -p fuzz-corpus && build-fuzz/fuzz_scene -max_len=8192 -timeout=5 fuzz-corpus scenes scenes/stress tests/cli/data
 //
 // The first byte picks the reader (0: scene XML, 1: OBJ, 2: PLY, by value mod 3; 0xFF: a deeply
-// nested scene built from the rest, see deeplyNested); the rest is the file. Shipped .xml files work as seeds as they are ('<' mod 3 = 0). Contract: the reader returns
+// nested scene built from the rest, see deeplyNested; 0xFE: a chain of <ref>s, see refChain); the rest is the file. Shipped .xml files work as seeds as they are ('<' mod 3 = 0). Contract: the reader returns
 // or throws rc::Error; any other exception escapes and libFuzzer reports it as a crash, as it
 // does ASan/UBSan findings and inputs that run past -timeout.
 #include <unistd.h>
@@ -53,13 +53,29 @@ std::string deeplyNested(const uint8_t* data, size_t size) {
   return xml + "</scene>";
 }
 
+// <ref> chains (first byte 0xFE): byte 1 the chain's length (×4), byte 2 how many refs each
+// blend holds to the previous one (1 or 2: linear depth or exponential visits), the rest goes
+// into the last BSDF. The loader must bound both with a message.
+std::string refChain(const uint8_t* data, size_t size) {
+  const size_t length = size > 1 ? size_t(data[1]) * 4 : 0;
+  const bool twice = size > 2 && (data[2] & 1);
+  std::string xml = "<scene version=\"3.0.0\"><bsdf type=\"diffuse\" id=\"b0\"/>";
+  for (size_t i = 1; i <= length; ++i) {
+    const std::string prev = "<ref id=\"b" + std::to_string(i - 1) + "\"/>";
+    xml += "<bsdf type=\"blendbsdf\" id=\"b" + std::to_string(i) + "\">" + prev + (twice ? prev : "<bsdf type=\"diffuse\"/>");
+    if (i == length && size > 3) xml.append(reinterpret_cast<const char*>(data) + 3, size - 3);
+    xml += "</bsdf>";
+  }
+  return xml + "<shape type=\"sphere\"><ref id=\"b" + std::to_string(length) + "\"/></shape></scene>";
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
-  if (data[0] == 0xFF) {
+  if (data[0] == 0xFF || data[0] == 0xFE) {
     const std::filesystem::path path = workDir() / "deep.xml";
-    std::ofstream(path, std::ios::binary | std::ios::trunc) << deeplyNested(data, size);
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << (data[0] == 0xFF ? deeplyNested(data, size) : refChain(data, size));
     try {
       rc::loadScene(path.string());
     } catch (const rc::Error&) {

@@ -96,6 +96,8 @@ MerlData readMerlFile(const std::string& path, bool clampNegative) {
   auto fail = [&](const std::string& why) -> void { throw Error("MERL file " + path + ": " + why); };
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) fail("is a directory");
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    fail("not a regular file");  // a FIFO would block, /dev/zero report an endless length
   std::ifstream f(path, std::ios::binary | std::ios::ate);
   if (!f) fail(std::string("cannot open (") + std::strerror(errno) + ")");
   const std::streamoff size = f.tellg();

@@ -69,7 +69,7 @@ void shadeRound(const RcacheRun& run, FinalPass& pass, const AdaptivePixels& ada
     }
     const size_t begin = static_cast<size_t>(y0) * W, end = static_cast<size_t>(y1) * W;
     auto tile = std::make_unique<TileFilm>(film.makeTile(x0, y0, x1, y1));
-    pass.shadeSamples(y0, ranges + begin, end - begin, *tile);
+    pass.shadeSlices(y0, ranges + begin, end - begin, *tile);
     into.merge(*tile);
     if (run.ctx.progress) run.ctx.progress("render (adaptive " + std::to_string(round) + ")", double(y1), double(H));
     y0 = y1;

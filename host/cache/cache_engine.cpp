@@ -122,8 +122,9 @@ const RenderContext& CacheEngine::directLightContext(const ShadePoint& sp) const
   return residualCtx_ && hasIndirect(sp) && isCached(technique(sp)) ? *residualCtx_ : ctx_;
 }
 
-float CacheEngine::footprint(const Vec3& p) const {
-  return camera_.pixelFootprint(std::max(glm::length(p - camera_.position()), 1e-6f));
+float CacheEngine::footprint(const Vec3& p, int level) const {
+  const float distance = std::max(glm::length(p - camera_.position()), 1e-6f);
+  return level == 0 ? camera_.pixelFootprint(distance) : camera_.squareFilmPixelFootprint(distance);
 }
 
 float CacheEngine::aForLevel(int level) const { return params_.a * std::pow(params_.secondaryAScale, float(level)); }
@@ -249,7 +250,7 @@ void CacheEngine::indirect(PointView pts, std::vector<Color>& out, std::vector<L
           for (const auto& c : lookups[j].entries) {
             const RecordInfo& r = reader.info(static_cast<uint32_t>(c.record));
             a.meanA += r.a;
-            a.meanRadiusPx += r.a * r.R / footprint(r.p);
+            a.meanRadiusPx += r.a * r.R / footprint(r.p, key.level);
           }
           if (a.contributors > 0) {
             a.meanA /= a.contributors;
@@ -358,11 +359,11 @@ std::vector<ShadePoint> CacheEngine::recordCandidates(PointView pts,
     accepted.query(sp.hit.p, [&](uint32_t id) {
       if (near) return;
       const ShadePoint& c = cands[id];
-      const float sep = sepPx * footprint(c.hit.p);
+      const float sep = sepPx * footprint(c.hit.p, c.level);
       if (glm::length(c.hit.p - sp.hit.p) < sep && glm::dot(c.frame.n, sp.frame.n) > 0.5f) near = true;
     });
     if (near) continue;
-    accepted.insert(static_cast<uint32_t>(cands.size()), sp.hit.p, sepPx * footprint(sp.hit.p));
+    accepted.insert(static_cast<uint32_t>(cands.size()), sp.hit.p, sepPx * footprint(sp.hit.p, sp.level));
     cands.push_back(sp);
     if (static_cast<int>(cands.size()) >= params_.batch) break;
   }
@@ -440,7 +441,7 @@ ProjectBatch CacheEngine::recordBatch(const CacheKey& key, const std::vector<Sha
   // Smallest distance the gradient formula sees: a thousandth of a pixel footprint keeps 1/r
   // finite when geometry touches the record, yet far below any R_min.
   float minFp = INFINITY;
-  for (const auto& c : cands) minFp = std::min(minFp, footprint(c.hit.p));
+  for (const auto& c : cands) minFp = std::min(minFp, footprint(c.hit.p, key.level));
   rayBatch.minDistance = std::max(1e-3f * minFp, 1e-12f);
   return rayBatch;
 }
@@ -504,7 +505,7 @@ RecordInfo CacheEngine::clampRecord(const CacheKey& key, const ShadePoint& cand,
   double inv = 0.0;
   for (int s = 0; s < S; ++s)
     if (hits[s].valid()) inv += 1.0 / std::max(double(hits[s].t), double(minDistance));
-  const float fp = footprint(cand.hit.p);
+  const float fp = footprint(cand.hit.p, key.level);
   const float R = inv > 0.0 ? static_cast<float>(S / inv) : INFINITY;
   info.p = cand.hit.p;
   info.frame = cand.frame;
@@ -876,7 +877,7 @@ bool CacheEngine::shrinkRecords(const CacheKey& key, const std::map<uint32_t, fl
     const RecordInfo r = cache.info(id);
     const float before = r.a;
     // Shrinking stops at a·min_a_scale and where the influence radius would fall below r_min.
-    const float floorA = std::max(aMin, std::min(aL, params_.rMinPx * levelScale * footprint(r.p) / r.R));
+    const float floorA = std::max(aMin, std::min(aL, params_.rMinPx * levelScale * footprint(r.p, key.level) / r.R));
     cache.shrinkA(id, newA, floorA);
     if (cache.info(id).a < before) {
       changed = true;

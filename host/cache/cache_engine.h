@@ -105,7 +105,11 @@ class CacheEngine {
   const EngineStats& stats() const { return stats_; }
   // Pixels whose primary hit created a record (AOV "records").
   std::vector<int> recordPixels() const { return recordPixels_; }
-  float footprint(const Vec3& p) const;
+  // World size of the pixel that bounds a record's reach at p: primary records (level 0) follow
+  // the film's pixels; deeper records, whose points lie anywhere in the scene and are seen only
+  // through other records, follow the square film of equal pixel count (camera.h), so thin films
+  // do not multiply them.
+  float footprint(const Vec3& p, int level) const;
   float aForLevel(int level) const;
 
  private:

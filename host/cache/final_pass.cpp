@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cache/final_pass_memory.h"
 #include "cache/rng_salts.h"
 #include "core/error.h"
 #include "core/parallel.h"
@@ -83,7 +84,8 @@ RcacheAovs parseRcacheAovs(const std::vector<std::string>& names) {
 
 FinalPass::FinalPass(const RcacheRun& run, const RcacheAovs& aovs, Film& film, AdaptivePixels& adaptive)
     : run_(run), aovs_(aovs), film_(film), adaptive_(adaptive) {
-  rowsPerBand_ = std::max(1, static_cast<int>(kSamplesPerBand / std::max(1, run.width * run.spp)));
+  const size_t rowSamples = static_cast<size_t>(std::max(1, run.width)) * static_cast<size_t>(std::max(1, run.spp));
+  rowsPerBand_ = static_cast<int>(std::max<size_t>(1, std::min<size_t>(run.height, kSamplesPerBand / rowSamples)));
   bands_ = (run.height + rowsPerBand_ - 1) / rowsPerBand_;
   bandFilms_.resize(static_cast<size_t>(bands_));
 }
@@ -94,8 +96,36 @@ void FinalPass::shadeBand(int band) {
   const size_t begin = static_cast<size_t>(y0) * W, end = static_cast<size_t>(y1) * W;
   auto tile = std::make_unique<TileFilm>(film_.makeTile(0, y0, W, y1));
   adaptive_.restart(begin, end);
-  shadeSamples(y0, adaptive_.ranges().data() + begin, end - begin, *tile);
+  shadeSlices(y0, adaptive_.ranges().data() + begin, end - begin, *tile);
   bandFilms_[static_cast<size_t>(band)] = std::move(tile);
+}
+
+// A band whose samples exceed the batch bound (one long row at a huge spp) is shaded in slices
+// of each pixel's samples. Sample indices, and so seeds and the image up to lookup sharing, are
+// those of the whole band; a slice holds a multiple of the sharing group where it can.
+void FinalPass::shadeSlices(int y0, const SampleRange* ranges, size_t pixels, TileFilm& tile) {
+  size_t total = 0;
+  int longest = 0;
+  for (size_t q = 0; q < pixels; ++q) {
+    total += static_cast<size_t>(ranges[q].count());
+    longest = std::max(longest, ranges[q].count());
+  }
+  const size_t batch = finalPassBatchSamples(static_cast<int>(pixels), longest);
+  if (total <= batch) {
+    shadeSamples(y0, ranges, pixels, tile);
+    return;
+  }
+  int perPixel = static_cast<int>(std::max<size_t>(1, batch / pixels));
+  const int shareGroup = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(std::max(1, run_.spp)))));
+  if (perPixel >= shareGroup) perPixel -= perPixel % shareGroup;
+  std::vector<SampleRange> slice(pixels);
+  for (int s0 = 0; s0 < longest && !run_.cancelled(); s0 += perPixel) {
+    for (size_t q = 0; q < pixels; ++q) {
+      slice[q].first = std::min(ranges[q].first + s0, ranges[q].end);
+      slice[q].end = std::min(slice[q].first + perPixel, ranges[q].end);
+    }
+    shadeSamples(y0, slice.data(), pixels, tile);
+  }
 }
 
 // A band shaded before records were created elsewhere may have missed them; it is shaded again

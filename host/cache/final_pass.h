@@ -37,6 +37,9 @@ class FinalPass {
   void shadeBand(int band);
   // Shades the samples ranges[q] of the pixels q of rows [y0, y0 + pixels / W) into `tile`.
   void shadeSamples(int y0, const SampleRange* ranges, size_t pixels, TileFilm& tile);
+  // The same in slices of each pixel's samples when they exceed the batch bound
+  // (final_pass_memory.h), so memory does not grow with spp.
+  void shadeSlices(int y0, const SampleRange* ranges, size_t pixels, TileFilm& tile);
   // Merges the bands' tiles into the film.
   void mergeBands();
 

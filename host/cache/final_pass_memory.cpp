@@ -22,23 +22,29 @@ double memoryBudgetBytes() {
   return budget;
 }
 
-std::string gib(double bytes) {
+std::string mib(double bytes) {
   char s[32];
-  std::snprintf(s, sizeof s, "%.1f GiB", bytes / double(1ull << 30));
+  std::snprintf(s, sizeof s, "%.0f MiB", bytes / double(1ull << 20));
   return s;
 }
 
 }  // namespace
 
-void checkFinalPassMemory(size_t samplesPerBatch, int width, int spp) {
-  const double need = kFinalPassBytesPerSample * static_cast<double>(samplesPerBatch);
+size_t finalPassBatchSamples(int width, int spp) {
+  const size_t row = static_cast<size_t>(std::max(1, width)) * static_cast<size_t>(std::max(1, spp));
+  return std::min(row, std::max(kFinalPassMaxBatchSamples, static_cast<size_t>(std::max(1, width))));
+}
+
+void checkFinalPassMemory(int width, int spp) {
+  const size_t batch = finalPassBatchSamples(width, spp);
+  const double need = kFinalPassBytesPerSample * static_cast<double>(batch);
   const double budget = memoryBudgetBytes();
   if (need <= budget) return;
   const long long fits = static_cast<long long>(budget / (kFinalPassBytesPerSample * std::max(1, width)));
-  throw Error("--spp " + std::to_string(spp) + ": the rcache final pass shades a film row of " + std::to_string(width) +
-              " pixels at once, about " + gib(need) + ", more than the " + gib(budget) +
-              " this process may use; at most --spp " + std::to_string(std::max(1LL, fits)) +
-              " fits (or use --integrator path, which needs no such buffer)");
+  throw Error("--spp " + std::to_string(spp) + ": the rcache final pass shades " + std::to_string(batch) +
+              " samples at once (film rows of " + std::to_string(width) + " pixels), about " + mib(need) +
+              ", more than the " + mib(budget) + " this process may use; at most --spp " +
+              std::to_string(std::max(1LL, fits)) + " fits (or use --integrator path, which needs no such buffer)");
 }
 
 }  // namespace rc

@@ -113,8 +113,8 @@ RcachePasses::RcachePasses(const RenderContext& ctx, const IntegratorSettings& s
 
   const Film film(scene.film);
   spp_ = ctx.options.spp > 0 ? ctx.options.spp : scene.sampleCount;
-  // Before the fill, not after it: the final pass's smallest batch is one film row of spp samples.
-  checkFinalPassMemory(static_cast<size_t>(film.width()) * static_cast<size_t>(spp_), film.width(), spp_);
+  // Before the fill, not after it (final_pass_memory.h).
+  checkFinalPassMemory(film.width(), spp_);
   Vec3 lo, hi;
   finiteSceneBounds(scene, lo, hi);
   engine_ = std::make_unique<CacheEngine>(ctx, backend_, params_, tables_, camera_, settings_.maxDepth,

@@ -1,4 +1,5 @@
 #include "core/json_reader.h"
+#include "core/regular_file.h"
 
 #include <cmath>
 #include <cctype>
@@ -152,6 +153,7 @@ JsonValue parseJson(const std::string& text, const std::string& source) {
 }
 
 JsonValue readJsonFile(const std::string& path) {
+  requireRegularFile(path, "JSON file");  // opening a FIFO would block until a writer comes
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot open");
   // Reads at most one byte beyond the limit, so a huge file is refused without being read whole.

@@ -16,4 +16,11 @@ void requireRegularFile(const std::string& path, const std::string& what) {
   if (!S_ISREG(st.st_mode)) throw Error("cannot open " + what + " '" + path + "': not a regular file");
 }
 
+std::string irregularFileReason(const std::string& path) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) return "not found";
+  if (S_ISDIR(st.st_mode)) return "it is a directory";
+  return S_ISREG(st.st_mode) ? "" : "not a regular file";
+}
+
 }  // namespace rc

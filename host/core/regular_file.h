@@ -10,4 +10,8 @@ namespace rc {
 // anything but a regular file. `what` names the role: "scene file", "mesh file", ...
 void requireRegularFile(const std::string& path, const std::string& what);
 
+// What keeps `path` from being read: "" for a regular file, else "not found", "it is a directory"
+// or "not a regular file", for callers that word their own message.
+std::string irregularFileReason(const std::string& path);
+
 }  // namespace rc

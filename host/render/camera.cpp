@@ -1,6 +1,7 @@
 #include "render/camera.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.h"
 
@@ -61,6 +62,11 @@ Ray CameraModel::generate(Vec2 cropPos) const {
 
 float CameraModel::pixelFootprint(float distance) const {
   return 2.0f * tanHalfX_ * distance / static_cast<float>(width_);
+}
+
+float CameraModel::squareFilmPixelFootprint(float distance) const {
+  const float squareSide = std::sqrt(static_cast<float>(width_) * static_cast<float>(height_));
+  return std::max(pixelFootprint(distance), 2.0f * tanHalfX_ * distance / squareSide);
 }
 
 }  // namespace rc

@@ -20,6 +20,11 @@ class CameraModel {
 
   // World-space size of one sensor pixel (the same with or without a crop window) on a plane facing the camera at `distance` along the view axis.
   float pixelFootprint(float distance) const;
+  // The same for a pixel of the square film with as many pixels and the same horizontal field of
+  // view, or the real pixel where that is larger: a resolution that follows the pixel count and the
+  // view, not the film's aspect ratio. A 16384×1 strip has pixels 128× smaller than a 128×128
+  // film's although it resolves no more of the scene off its thin view.
+  float squareFilmPixelFootprint(float distance) const;
 
   float fovXDegrees() const { return fovX_; }
   Vec3 position() const { return origin_; }

@@ -1,10 +1,20 @@
 // <bsdf>: properties, nested BSDFs (or refs) and textured parameters handed to the BSDF factory
 // (host/bsdf); a texture that scales the whole BSDF wraps it (bsdf/textured.h).
+#include <algorithm>
+#include <string>
+
 #include "bsdf/bsdf_factory.h"
 #include "bsdf/textured.h"
 #include "scene/loader.h"
 
 namespace rc {
+
+namespace {
+// A BSDF evaluates its nested BSDFs on every call, so <ref>s to BSDFs that themselves hold refs
+// form a DAG whose evaluation visits every path: 40 blends of two refs to the previous one are
+// 2^40 evaluations per shading point. Real materials nest a handful (twosided, blend, mask).
+constexpr uint64_t kMaxBsdfTreeNodes = 4096;
+}  // namespace
 
 BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
   Element e = parseElement(file, node);
@@ -45,6 +55,19 @@ BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_
     }
   }
 
+  BsdfTreeSize tree;
+  for (const BsdfPtr& child : nested) {
+    auto it = bsdfTreeSizes_.find(child.get());
+    const BsdfTreeSize sub = it == bsdfTreeSizes_.end() ? BsdfTreeSize{} : it->second;
+    tree.depth = std::max(tree.depth, sub.depth + 1);
+    tree.nodes = std::min(tree.nodes + sub.nodes, kMaxBsdfTreeNodes + 1);  // saturates: no overflow
+  }
+  if (tree.depth > kMaxElementDepth)
+    e.fail("BSDFs nested deeper than " + std::to_string(kMaxElementDepth) + " levels (counting those reached by <ref>)");
+  if (tree.nodes > kMaxBsdfTreeNodes)
+    e.fail("one evaluation of this BSDF would visit more than " + std::to_string(kMaxBsdfTreeNodes) +
+           " nested BSDFs (<ref>s to BSDFs that hold <ref>s multiply)");
+
   BsdfPtr bsdf;
   if (!isKnownBsdfType(e.type)) {
     unsupported(e.where() + ": unknown plugin '" + e.type + "'");
@@ -82,6 +105,7 @@ BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_
   if (!bsdf) e.fail("the BSDF factory returned nothing");
   checkUnused(e);
   if (factor) bsdf = makeTexturedBsdf(bsdf, factor);
+  bsdfTreeSizes_[bsdf.get()] = tree;
   registerId(e, Kind::Bsdf, bsdf);
   return bsdf;
 }

@@ -3,12 +3,14 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "core/regular_file.h"
 #include "image/image_file.h"
 
 namespace rc {
 
 EnvImage loadEnvImage(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw Error("environment map '" + path + "' not found");
+  if (const std::string why = irregularFileReason(path); !why.empty())
+    throw Error("environment map '" + path + (why == "not found" ? "' not found" : "': " + why));
   ImageChannels in;
   try {
     in = readImageFile(path);

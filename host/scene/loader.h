@@ -1,6 +1,7 @@
 #pragma once
 // Internal state of one loadScene() call, shared by the per-plugin builders (bsdf_builder.cpp,
 // shape_builder.cpp, emitter_builder.cpp, sensor_builder.cpp, integrator_builder.cpp).
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -67,6 +68,7 @@ class Loader {
   std::vector<std::string>* warnings_;
   std::map<std::string, std::string> params_;  // -D defines, then <default>s not overridden
   std::vector<std::string> includeStack_;      // canonical paths of the files being read
+  size_t includesRead_ = 0;
   std::vector<std::shared_ptr<XmlFile>> files_;
   std::string mainDir_;
   std::vector<std::string> searchPaths_;       // <path value> folders, the latest first
@@ -76,6 +78,13 @@ class Loader {
   std::map<std::string, std::pair<std::shared_ptr<XmlFile>, pugi::xml_node>> areaEmitters_;
   std::map<const Bsdf*, int> bsdfIndices_;
   BsdfPtr defaultBsdf_;
+  // Per built BSDF: its nesting depth and how many BSDFs one evaluation visits, counting a BSDF
+  // that <ref>s reach twice twice (bsdf_builder.cpp bounds both).
+  struct BsdfTreeSize {
+    int depth = 1;
+    uint64_t nodes = 1;
+  };
+  std::map<const Bsdf*, BsdfTreeSize> bsdfTreeSizes_;
   std::map<std::string, int> anonymousCount_;
   int sensors_ = 0, integrators_ = 0, environments_ = 0;
   Scene scene_;

@@ -6,12 +6,21 @@
 #include <filesystem>
 #include <regex>
 
+#include "core/regular_file.h"
 #include "scene/loader.h"
 #include "scene/value_parsing.h"
 
 namespace rc {
 
 namespace fs = std::filesystem;
+
+namespace {
+// Each <include> level recurses through processFile; a file that includes the next one twice
+// doubles the work per level (2^30 reads for 30 files), so both the depth and the total count of
+// includes are bounded, far above what scenes split into parts use.
+constexpr size_t kMaxIncludeDepth = 64;
+constexpr size_t kMaxIncludes = 10000;
+}  // namespace
 
 Scene loadScene(const std::string& path, const LoadOptions& options, std::vector<std::string>* warnings) {
   Loader loader(options, warnings);
@@ -121,10 +130,16 @@ void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     if (target.is_relative()) target = fs::path(file->path()).parent_path() / target;
     target = target.lexically_normal();
     const std::string at = whereOf(*file, node);
-    if (!fs::is_regular_file(target)) throw LocatedError(at + ": included file '" + target.string() + "' not found");
+    if (const std::string why = irregularFileReason(target.string()); !why.empty())
+      throw LocatedError(at + ": included file '" + target.string() + (why == "not found" ? "' not found" : "': " + why));
     const std::string canonical = fs::weakly_canonical(target).string();
     for (const std::string& s : includeStack_)
       if (s == canonical) throw LocatedError(at + ": include cycle: '" + target.string() + "' is already being read");
+    if (includeStack_.size() >= kMaxIncludeDepth)
+      throw LocatedError(at + ": <include>s nested deeper than " + std::to_string(kMaxIncludeDepth) + " files");
+    if (++includesRead_ > kMaxIncludes)
+      throw LocatedError(at + ": more than " + std::to_string(kMaxIncludes) +
+                         " <include>s read in all (files included several times count each time)");
     includeStack_.push_back(canonical);
     std::shared_ptr<XmlFile> inc;
     try {

@@ -1,4 +1,5 @@
 #include "scene/serialized_loader.h"
+#include "core/regular_file.h"
 
 #include <zlib.h>
 
@@ -95,6 +96,7 @@ class Inflater {
 }  // namespace
 
 MeshData loadSerialized(const std::string& path, int shapeIndex) {
+  requireRegularFile(path, "mesh file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot open the serialized mesh");
   std::ostringstream ss;

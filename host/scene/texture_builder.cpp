@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/regular_file.h"
 #include "image/image_file.h"
 #include "scene/loader.h"
 
@@ -33,7 +34,8 @@ TexturePtr loadBitmap(Loader& loader, const Element& e, const UvTransform& toUv)
   if (filter != "bilinear" && filter != "nearest") e.failParam("filter_type", "'filter_type' must be bilinear or nearest");
   if (wrap != "repeat" && wrap != "mirror" && wrap != "clamp") e.failParam("wrap_mode", "'wrap_mode' must be repeat, mirror or clamp");
   const std::string path = loader.resolvePath(e, fn);
-  if (!std::filesystem::is_regular_file(path)) e.failParam("filename", "texture '" + path + "' not found");
+  if (const std::string why = irregularFileReason(path); !why.empty())
+    e.failParam("filename", "texture '" + path + (why == "not found" ? "' not found" : "': " + why));
   const ImageChannels img = e.located([&] { return readImageFile(path); });
   if (img.width <= 0 || img.height <= 0 || img.channels() == 0) e.failParam("filename", "texture '" + path + "' has no pixels");
   if (size_t(img.width) * size_t(img.height) > (size_t(1) << 28)) e.failParam("filename", "texture '" + path + "' is too large");

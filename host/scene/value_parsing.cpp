@@ -102,7 +102,8 @@ std::string substituteParams(const std::string& text, const std::map<std::string
     current = substituteOnce(current, params, replaced);
     if (!replaced) return current;  // only '$' signs not followed by a name are left
   }
-  throw Error("parameter substitution in '" + text + "' does not terminate (a parameter refers to itself)");
+  throw Error("parameter substitution in '" + text +
+              "' does not terminate within 16 rounds (a parameter refers to itself, or a chain of more than 16 names)");
 }
 
 }  // namespace rc

@@ -16,7 +16,8 @@ fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
 # bounded SECONDS -- command...: runs with a 3 GB address-space limit and a wall-clock limit.
 bounded() {
   local secs=$1; shift 2
-  ( ulimit -v 3000000; exec timeout "$secs" "$@" )
+  # (-k: a render stuck inside one pixel would outlive the SIGTERM that asks it to stop)
+  ( ulimit -v 3000000; exec timeout -k 5 "$secs" "$@" )
 }
 # Renders that must finish: exit 0, a finite image, within the limits.
 expect_renders() {
@@ -176,13 +177,83 @@ lines += ['<default name="p%d" value="$p%d$p%d"/>' % (i, i - 1, i - 1) for i in 
 open("doubling.xml", "w").write("\n".join(lines + ["</scene>"]))
 PY
 expect_refusal default_doubling_chain "doubling.xml:20:" 20 -- doubling.xml -o d.exr
-# A valid --spp whose final-pass batch (one film row × spp samples) cannot fit is refused up front.
-expect_refusal spp_beyond_memory "--spp 1048576: the rcache final pass shades a film row of 32 pixels" 20 -- \
-  "$DATA/tiny.xml" "${RCACHE[@]}" -D res=32 --spp 1048576 -o huge_spp.exr
+# A row whose samples exceed the final pass's batch (262,144 samples, ~300 MB) is shaded in
+# slices: 300,000 samples of one pixel under a 700 MB limit (a 342 MiB budget) used to be refused
+# (one row × spp = 343 MiB); now it renders in ~200 MB.
+err=$( (ulimit -v 700000; exec timeout -k 5 120 "$RC" "$DATA/tiny.xml" "${RCACHE[@]}" -D res=1 --spp 300000 -o huge_spp.exr) 2>&1); code=$?
+[ $code -eq 0 ] && finite_image huge_spp.exr && pass huge_spp_streams || fail huge_spp_streams "exit $code: $err"
+# Only a budget below one batch still refuses, up front and naming --spp.
+err=$( (ulimit -v 600000; exec timeout -k 5 60 "$RC" "$DATA/tiny.xml" "${RCACHE[@]}" -D res=32 --spp 1048576 -o beyond.exr) 2>&1); code=$?
+[ $code -eq 1 ] && grep -qF -- "--spp 1048576: the rcache final pass shades 262144 samples at once" <<<"$err" && [ ! -e beyond.exr ] \
+  && pass spp_beyond_memory || fail spp_beyond_memory "exit $code: $err"
 # A bad rcache parameter in the file is reported at its line.
 sed 's|<integrator type="path"><integer name="max_depth" value="4"/></integrator>|<integrator type="rcache">\n<integer name="max_depth" value="4"/>\n<float name="a" value="-2"/></integrator>|' \
   "$DATA/tiny.xml" > bad_param.xml
 expect_refusal rcache_param_file_line "bad_param.xml:7: <integrator type=\"rcache\">: parameter 'a'" 20 -- bad_param.xml --device cpu -o bp.exr
+
+# --- 7. Thin films: records deeper than the primary level follow the square film of equal pixel
+# count, not the strip's tiny pixels (a 16384×1 film made 120× the square film's records and ran
+# for minutes). Their count may not exceed twice the 128×128 film's (plus a few).
+sed 's|<integer name="width" value="$res"/><integer name="height" value="$res"/>|<integer name="width" value="$w"/><integer name="height" value="$h"/>|; s|<default name="res" value="16"/>|<default name="w" value="16"/><default name="h" value="16"/>|' \
+  "$DATA/tiny.xml" > wh.xml
+secondary_records() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(d['records'] - d['records_primary'])" "$1"; }
+expect_renders film_128x128 60 -- wh.xml "${RCACHE[@]}" -D fallback=false -D w=128 -D h=128 --spp 1 -o square.exr --stats square.json
+for wh in 16384x1 8192x2; do
+  expect_renders "film_$wh" 60 -- wh.xml "${RCACHE[@]}" -D fallback=false -D w=${wh%x*} -D h=${wh#*x} --spp 1 -o thin_$wh.exr --stats thin_$wh.json
+  sq=$(secondary_records square.json 2>/dev/null); th=$(secondary_records thin_$wh.json 2>/dev/null)
+  if [ -n "$sq" ] && [ -n "$th" ] && [ "$th" -le $((2 * sq + 8)) ]; then pass "thin_film_records_$wh"
+  else fail "thin_film_records_$wh" "secondary records: $th on $wh, $sq on 128x128"; fi
+done
+
+# --- 3. Chains of <ref>s and <include>s are bounded with file:line, not a stack overflow or an
+# exponential blow-up (a BSDF evaluates every BSDF it nests, once per path through the refs).
+python3 - "$DATA/tiny.xml" <<'PY'
+import sys
+tiny = open(sys.argv[1]).read()
+head, tail = tiny.split("</scene>")[0], "</scene>"
+def blends(name, n, second):
+    lines = ['<bsdf type="diffuse" id="b0"/>']
+    for i in range(1, n + 1):
+        lines.append('<bsdf type="blendbsdf" id="b%d"><float name="weight" value="0.5"/><ref id="b%d"/>%s</bsdf>'
+                     % (i, i - 1, second.replace("PREV", "b%d" % (i - 1))))
+    lines.append('<shape type="sphere"><float name="radius" value="0.1"/><ref id="b%d"/></shape>' % n)
+    body = head.rstrip() + "\n" + "\n".join(lines) + "\n" + tail
+    open(name, "w").write(body)
+blends("ref_chain.xml", 300, '<bsdf type="diffuse"/>')
+blends("ref_laughs.xml", 40, '<ref id="PREV"/>')
+for i in range(100):
+    open("inc_%d.xml" % i, "w").write('<scene version="3.0.0">\n<include filename="inc_%d.xml"/>\n</scene>' % (i + 1))
+open("inc_100.xml", "w").write('<scene version="3.0.0"/>')
+open("include_chain.xml", "w").write(head.rstrip() + '\n<include filename="inc_0.xml"/>\n' + tail)
+for i in range(30):
+    open("twice_%d.xml" % i, "w").write('<scene version="3.0.0">\n<include filename="twice_%d.xml"/>\n<include filename="twice_%d.xml"/>\n</scene>' % (i + 1, i + 1))
+open("twice_30.xml", "w").write('<scene version="3.0.0"/>')
+open("include_laughs.xml", "w").write(head.rstrip() + '\n<include filename="twice_0.xml"/>\n' + tail)
+PY
+tiny_lines=$(($(wc -l < "$DATA/tiny.xml") - 1))
+expect_refusal ref_chain "ref_chain.xml:$((tiny_lines + 129)): <bsdf type=\"blendbsdf\" id=\"b128\">: BSDFs nested deeper than 128" 20 -- ref_chain.xml -o r.exr
+expect_refusal ref_billion_laughs "ref_laughs.xml:$((tiny_lines + 13)): <bsdf type=\"blendbsdf\" id=\"b12\">: one evaluation of this BSDF would visit more than 4096" 20 -- ref_laughs.xml -o r.exr
+expect_refusal include_chain "inc_62.xml:2: <include>: <include>s nested deeper than 64 files" 20 -- include_chain.xml -o i.exr
+expect_refusal include_billion_laughs "more than 10000 <include>s read in all" 20 -- include_laughs.xml -o i.exr
+# -D values naming each other, doubling each round: bounded like <default>s.
+dchain=(); for i in $(seq 1 40); do dchain+=(-D "p$i=\$p$((i - 1))\$p$((i - 1))"); done
+expect_refusal define_doubling_chain "tiny.xml:11: <integer name=\"width\">: attribute 'value': parameter substitution in '\$res' does not terminate within 16 rounds" 20 -- "$DATA/tiny.xml" -D p0=xxxxxxxx "${dchain[@]}" -D 'res=$p40' -o d.exr
+
+# --- 7. Every file rcache reads is refused when it is not a regular file (a FIFO would block
+# forever in open(), /dev/zero be read forever): scene parts, meshes, images, MERL tables, paths.
+for kind in serialized include envmap bitmap merl; do mkfifo "fifo_$kind"; done
+add_shape fifo_serialized.xml '<shape type="serialized"><string name="filename" value="fifo_serialized"/></shape>'
+add_shape fifo_include.xml '<include filename="fifo_include"/>'
+add_shape fifo_envmap.xml '<emitter type="envmap"><string name="filename" value="fifo_envmap"/></emitter>'
+add_shape fifo_bitmap.xml '<bsdf type="diffuse"><texture type="bitmap" name="reflectance"><string name="filename" value="fifo_bitmap"/></texture></bsdf>'
+add_shape fifo_merl.xml '<bsdf type="merl"><string name="filename" value="fifo_merl"/></bsdf>'
+expect_refusal serialized_is_fifo "fifo_serialized': not a regular file" 20 -- fifo_serialized.xml -o f.exr
+expect_refusal include_is_fifo "fifo_include.xml:31: <include>: included file 'fifo_include': not a regular file" 20 -- fifo_include.xml -o f.exr
+expect_refusal envmap_is_fifo "fifo_envmap': not a regular file" 20 -- fifo_envmap.xml -o f.exr
+expect_refusal bitmap_is_fifo "fifo_bitmap': not a regular file" 20 -- fifo_bitmap.xml -o f.exr
+expect_refusal merl_is_fifo "fifo_merl: not a regular file" 20 -- fifo_merl.xml -o f.exr
+mkfifo path_fifo.json
+expect_refusal camera_path_is_fifo "path_fifo.json': not a regular file" 20 -- "$DATA/tiny.xml" --frames 2 --camera-path path_fifo.json -o walk.exr
 
 echo "$fails failure(s)"
 [ $fails -eq 0 ]

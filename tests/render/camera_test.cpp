@@ -78,6 +78,20 @@ TEST(Camera, PixelFootprintMatchesNeighbourRays) {
   EXPECT_NEAR(model.pixelFootprint(d), spacing, 1e-4f * d);
 }
 
+TEST(Camera, SquareFilmFootprintFollowsThePixelCountNotTheAspect) {
+  Camera cam;
+  cam.fovDegrees = 45.0f;  // along x
+  const float d = 3.0f;
+  const CameraModel square(cam, 128, 128), strip(cam, 16384, 1), twoRows(cam, 8192, 2), tall(cam, 1, 16384);
+  EXPECT_FLOAT_EQ(square.squareFilmPixelFootprint(d), square.pixelFootprint(d));
+  // A strip's pixels are 128× smaller; the square film of its pixel count is the 128×128 one.
+  EXPECT_NEAR(strip.pixelFootprint(d) * 128.0f, square.pixelFootprint(d), 1e-6f);
+  EXPECT_NEAR(strip.squareFilmPixelFootprint(d), square.pixelFootprint(d), 1e-6f);
+  EXPECT_NEAR(twoRows.squareFilmPixelFootprint(d), square.pixelFootprint(d), 1e-6f);
+  // Never below the real pixel: a tall film's pixels (45° wide) are already the larger.
+  EXPECT_FLOAT_EQ(tall.squareFilmPixelFootprint(d), tall.pixelFootprint(d));
+}
+
 TEST(Camera, NearClipIsADepth) {
   Camera cam;
   cam.fovDegrees = 90.0f;
