@@ -102,6 +102,7 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
       if (emitterNode) throw LocatedError(whereOf(*file, child) + ": a shape takes one emitter, this is the second");
       emitterFile = sharedEmitter->first;
       emitterNode = sharedEmitter->second;
+      substituted(emitterFile, emitterNode);
     } else if (tag == "bsdf" || tag == "ref") {
       if (bsdf) throw LocatedError(whereOf(*file, child) + ": a shape takes one bsdf, this is the second");
       if (tag == "bsdf") {
