@@ -76,6 +76,10 @@ uint64_t cacheSceneHash(const Scene& scene, int maxDepth, bool tlMode) {
     hashFloats(h, v, 13);
     hashFloats(h, &e.direction.x, 3);
     hashFloats(h, &e.toWorld[0][0], 16);
+    if (e.type == EmitterType::Spot) {
+      const float spot[2] = {e.spotCutoffRad, e.spotBeamRad};
+      hashFloats(h, spot, 2);
+    }
     // The envmap by its pixels, not its path: an edited image must not reuse a stale cache, and
     // the same scene run from another directory must still find its cache.
     const int size[2] = {e.envWidth, e.envHeight};

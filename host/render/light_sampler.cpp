@@ -7,6 +7,7 @@
 #include "geometry/face_normal.h"
 #include "render/distribution.h"
 #include "render/envmap_light.h"
+#include "render/spot_light.h"
 
 namespace rc {
 
@@ -65,7 +66,7 @@ LightSampler::LightSampler(const Scene& scene, const std::vector<Emitter>& emitt
     for (const Vec3& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
   for (const Sphere& s : scene.spheres) lo = glm::min(lo, s.center - s.radius), hi = glm::max(hi, s.center + s.radius);
   for (const Emitter& e : emitters)
-    if (e.type == EmitterType::Point) lo = glm::min(lo, e.position), hi = glm::max(hi, e.position);
+    if (e.type == EmitterType::Point || e.type == EmitterType::Spot) lo = glm::min(lo, e.position), hi = glm::max(hi, e.position);
   const double sceneRadius = lo.x <= hi.x ? std::max(1e-6, 0.5 * static_cast<double>(glm::length(hi - lo))) : 1.0;
   const double discArea = kPiD * sceneRadius * sceneRadius;
 
@@ -127,6 +128,9 @@ LightSampler::LightSampler(const Scene& scene, const std::vector<Emitter>& emitt
         break;  // handled with its shape
       case EmitterType::Point:
         addEntry(std::move(e), 4.0 * kPiD * luminance(em.intensity));
+        break;
+      case EmitterType::Spot:  // the power of its cone at full intensity: an upper bound is enough
+        addEntry(std::move(e), 2.0 * kPiD * (1.0 - em.spotCosCutoff) * luminance(em.intensity));
         break;
       case EmitterType::Directional:
         addEntry(std::move(e), discArea * luminance(em.irradiance));
@@ -247,15 +251,18 @@ std::optional<LightSample> LightSampler::sample(const Vec3& p, Vec2 u, float uLi
       const float cosL = std::fabs(glm::dot(n, toLight)) / std::sqrt(dist2);
       return finishArea(q, n, dist2 / (4.0f * kPi * r2 * cosL));
     }
-    case EmitterType::Point: {
+    case EmitterType::Point:
+    case EmitterType::Spot: {
       const Vec3 toLight = em.position - p;
       const float dist2 = glm::dot(toLight, toLight);
       if (!(dist2 > 0.0f)) return std::nullopt;
       ls.dist = std::sqrt(dist2);
       ls.wi = toLight / ls.dist;
+      const float falloff = e.type == EmitterType::Spot ? spotFalloff(em, -ls.wi) : 1.0f;
+      if (!(falloff > 0.0f)) return std::nullopt;
       ls.delta = true;
       ls.pdf = 0.0f;
-      ls.radiance = em.intensity / (dist2 * pSel);
+      ls.radiance = em.intensity * (falloff / (dist2 * pSel));
       ls.lightPoint = em.position;
       return ls;
     }

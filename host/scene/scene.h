@@ -34,14 +34,18 @@ struct Sphere {
   int emitter = -1;
 };
 
-enum class EmitterType { Area, Point, Directional, Constant, Envmap };
+enum class EmitterType { Area, Point, Directional, Constant, Envmap, Spot };
 
 struct Emitter {
   EmitterType type = EmitterType::Area;
   Color radiance{1.0f};       // area, constant
-  Color intensity{1.0f};      // point (W/sr)
+  Color intensity{1.0f};      // point, spot (W/sr; spot: on its axis)
   Color irradiance{1.0f};     // directional
-  Vec3 position{0.0f};        // point
+  Vec3 position{0.0f};        // point, spot
+  // spot (render/spot_light.h): angles in radians from the local +z, and the inverse of
+  // to_world's linear part that takes world directions into that frame
+  float spotCutoffRad = 0.0f, spotBeamRad = 0.0f, spotCosCutoff = 1.0f, spotCosBeam = 1.0f;
+  Mat3 spotWorldToLocal{1.0f};
   Vec3 direction{0, 0, 1};    // directional: direction light travels (world, unit)
   // envmap: lat-long image, Mitsuba convention (Y up in the emitter's local frame)
   std::string filename;
