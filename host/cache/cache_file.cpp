@@ -63,6 +63,11 @@ uint64_t cacheSceneHash(const Scene& scene, int maxDepth, bool tlMode) {
     const int ids[3] = {s.bsdf, s.emitter, s.flipNormals ? 1 : 0};
     h = fnv1a64(ids, sizeof(ids), h);
   }
+  for (const Cylinder& c : scene.cylinders) {
+    hashFloats(h, &c.toWorld[0][0], 16);
+    const int ids[2] = {c.bsdf, c.flipNormals ? 1 : 0};
+    h = fnv1a64(ids, sizeof(ids), h);
+  }
   for (const auto& b : scene.bsdfs) {
     const std::string key = b->parameterKey();
     h = fnv1a64(key.data(), key.size(), h);

@@ -34,6 +34,16 @@ struct Sphere {
   int emitter = -1;
 };
 
+// An analytic open cylinder (shape `cylinder`, no caps): the unit cylinder x² + y² = 1, 0 ≤ z ≤ 1
+// taken to world space by toWorld (Mitsuba's p0, p1, radius folded in; geometry/cylinder_geometry.h).
+struct Cylinder {
+  std::string name;
+  Mat4 toWorld{1.0f};
+  Mat4 toObject{1.0f};                 // inverse of toWorld
+  bool flipNormals = false;            // normals point toward the axis
+  int bsdf = -1;
+};
+
 enum class EmitterType { Area, Point, Directional, Constant, Envmap, Spot };
 
 struct Emitter {
@@ -99,6 +109,7 @@ struct Scene {
   std::vector<BsdfPtr> bsdfs;
   std::vector<Mesh> meshes;
   std::vector<Sphere> spheres;
+  std::vector<Cylinder> cylinders;
   std::vector<Emitter> emitters;
   Camera camera;
   FilmSettings film;
