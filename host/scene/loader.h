@@ -72,6 +72,7 @@ class Loader {
   void processFile(const std::shared_ptr<XmlFile>& file, const std::string& includedFrom);
   void substituteTree(const std::shared_ptr<XmlFile>& file, pugi::xml_node node, bool topLevel);
   std::string areaEmitterId(const pugi::xml_node& node) const;
+  std::vector<std::filesystem::path> resolverFolders() const;
   std::filesystem::path includeTarget(const XmlFile& file, const std::string& filename) const;
   void sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
 

@@ -123,8 +123,9 @@ void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     fs::path folder = value.value();
     if (folder.is_relative()) {
       fs::path found = (fs::path(file->path()).parent_path() / folder).lexically_normal();
-      for (auto it = searchPaths_.begin(); !fs::is_directory(found) && it != searchPaths_.end(); ++it)
-        found = (fs::path(*it) / folder).lexically_normal();
+      const std::vector<fs::path> folders = resolverFolders();
+      for (auto it = folders.begin(); !fs::is_directory(found) && it != folders.end(); ++it)
+        found = (*it / folder).lexically_normal();
       folder = found;
     }
     if (!fs::is_directory(folder))
@@ -183,20 +184,24 @@ void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   }
 }
 
-fs::path Loader::includeTarget(const XmlFile& file, const std::string& filename) const {
-  // Mitsuba's <include>: the including file's folder is prepended to the file resolver while the
-  // included file is read, so a nested include is looked up in its includer's folder, then in the
-  // folders of the files including that one (innermost first), then in the resolver's <path>
-  // folders and the main scene's folder.
-  const fs::path name(filename);
-  if (name.is_absolute()) return name.lexically_normal();
-  const fs::path local = (fs::path(file.path()).parent_path() / name).lexically_normal();
-  if (fs::is_regular_file(local)) return local;
+std::vector<fs::path> Loader::resolverFolders() const {
+  // Mitsuba's file resolver while a file is read: the folders of the files including it
+  // (innermost first; each <include> prepends its file's folder), the <path> folders, the main
+  // scene's folder.
   std::vector<fs::path> folders;
   for (auto it = includeStack_.rbegin(); it != includeStack_.rend(); ++it) folders.push_back(fs::path(*it).parent_path());
   for (const std::string& folder : searchPaths_) folders.push_back(folder);
   folders.push_back(mainDir_);
-  for (const fs::path& folder : folders) {
+  return folders;
+}
+
+fs::path Loader::includeTarget(const XmlFile& file, const std::string& filename) const {
+  // Mitsuba's <include>: relative to the including file, then through the resolver's folders.
+  const fs::path name(filename);
+  if (name.is_absolute()) return name.lexically_normal();
+  const fs::path local = (fs::path(file.path()).parent_path() / name).lexically_normal();
+  if (fs::is_regular_file(local)) return local;
+  for (const fs::path& folder : resolverFolders()) {
     const fs::path candidate = (folder / name).lexically_normal();
     if (fs::is_regular_file(candidate)) return candidate;
   }

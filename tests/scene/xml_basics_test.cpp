@@ -180,6 +180,19 @@ TEST(SceneXml, NestedIncludeFallsBackToTheIncludersFolders) {
               {"broken.xml:2:", "parts/nowhere.xml", "not found"});
 }
 
+TEST(SceneXml, PathInAnIncludedFileFallsBackToTheIncludersFolders) {
+  // mitsuba-data's docs/scenes/include/*.xml write <path value="../../common"/> meant from
+  // docs/scenes (the includer's folder, which Mitsuba's resolver holds while the include is read).
+  TempDir dir;
+  dir.write("common/meshes/tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  dir.write("docs/scenes/include/part.xml", "<scene version=\"3.0.0\"><path value=\"../../common\"/>"
+                                            "<shape type=\"obj\"><string name=\"filename\" value=\"meshes/tri.obj\"/></shape></scene>");
+  const std::string main = dir.write("docs/scenes/main.xml", sceneXml("<include filename=\"include/part.xml\"/>"));
+  const Scene s = loadScene(main, LoadOptions{}, nullptr);
+  ASSERT_EQ(s.meshes.size(), 1u);
+  EXPECT_EQ(s.meshes[0].triangles.size(), 1u);
+}
+
 TEST(SceneXml, SharedAreaEmitterDefinedAfterItsShapeIsSubstituted) {
   TempDir dir;
   const Scene s = loadText(dir, sceneXml("<default name=\"L\" value=\"3\"/>\n"
