@@ -63,6 +63,11 @@ uint64_t cacheSceneHash(const Scene& scene, int maxDepth, bool tlMode) {
     const int ids[3] = {s.bsdf, s.emitter, s.flipNormals ? 1 : 0};
     h = fnv1a64(ids, sizeof(ids), h);
   }
+  for (const Cylinder& c : scene.cylinders) {
+    hashFloats(h, &c.toWorld[0][0], 16);
+    const int ids[2] = {c.bsdf, c.flipNormals ? 1 : 0};
+    h = fnv1a64(ids, sizeof(ids), h);
+  }
   for (const auto& b : scene.bsdfs) {
     const std::string key = b->parameterKey();
     h = fnv1a64(key.data(), key.size(), h);
@@ -76,6 +81,10 @@ uint64_t cacheSceneHash(const Scene& scene, int maxDepth, bool tlMode) {
     hashFloats(h, v, 13);
     hashFloats(h, &e.direction.x, 3);
     hashFloats(h, &e.toWorld[0][0], 16);
+    if (e.type == EmitterType::Spot) {
+      const float spot[2] = {e.spotCutoffRad, e.spotBeamRad};
+      hashFloats(h, spot, 2);
+    }
     // The envmap by its pixels, not its path: an edited image must not reuse a stale cache, and
     // the same scene run from another directory must still find its cache.
     const int size[2] = {e.envWidth, e.envHeight};

@@ -1,4 +1,5 @@
-// Embree 3 scene: one triangle geometry per mesh, one user geometry holding every analytic sphere.
+// Embree 3 scene: one triangle geometry per mesh, one user geometry holding every analytic sphere,
+// one holding every cylinder (geometry/cylinder_geometry.h).
 #include "geometry/accel.h"
 
 #include <embree3/rtcore.h>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "geometry/cylinder_geometry.h"
 #include "geometry/face_normal.h"
 #include "geometry/ray_counter.h"
 #include "geometry/sphere_intersect.h"
@@ -133,6 +135,7 @@ struct Accel::Impl {
   std::vector<int> geomToMesh;  // Embree geomID → mesh index, −1 for the sphere geometry
   std::vector<TriangleConstants> meshConstants;  // per mesh (empty for meshes not in the BVH)
   unsigned sphereGeom = RTC_INVALID_GEOMETRY_ID;
+  unsigned cylinderGeom = RTC_INVALID_GEOMETRY_ID;
   SphereData sphereData{};
   // Per sphere: whether its material reads the hit's uv (a textured factor, Bsdf::tint). The
   // sphere's uv costs an atan2 and an acos, so hits on other spheres leave it zero.
@@ -225,6 +228,12 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
     if (im.geomToMesh.size() <= im.sphereGeom) im.geomToMesh.resize(im.sphereGeom + 1, -1);
   }
 
+  if (!scene.cylinders.empty()) {
+    im.cylinderGeom = attachCylinders(im.device, im.scene, scene.cylinders);
+    im.check("cylinders");
+    if (im.geomToMesh.size() <= im.cylinderGeom) im.geomToMesh.resize(im.cylinderGeom + 1, -1);
+  }
+
   rtcCommitScene(im.scene);
   im.check("building the scene BVH");
 }
@@ -293,6 +302,21 @@ Hit sphereHit(const Sphere& s, int index, const Ray& ray, float t, bool withUv) 
   return h;
 }
 
+Hit cylinderHit(const Cylinder& c, const Ray& ray, float t) {
+  const CylinderHitGeometry g = cylinderHitGeometry(c, ray.o + t * ray.d);
+  Hit h;
+  h.t = t;
+  h.prim = 0;
+  h.bsdf = c.bsdf;
+  h.p = g.p;
+  h.pError = kPointErrorUlps * kFloatEps * (maxAbs(g.p) + maxAbs(Vec3(c.toWorld[3])) + glm::length(Vec3(c.toWorld[0])) +
+                                            glm::length(Vec3(c.toWorld[2])));
+  h.ng = h.ns = g.n;
+  h.dpdu = g.dpdu;
+  h.uv = g.uv;
+  return h;
+}
+
 }  // namespace
 
 namespace {
@@ -312,6 +336,7 @@ Hit Accel::hitOf(const Ray& ray, unsigned geomID, unsigned primID, float u, floa
     const int s = static_cast<int>(primID);
     return sphereHit(scene_.spheres[s], s, ray, tfar, impl_->sphereUv[s] != 0);
   }
+  if (geomID == impl_->cylinderGeom) return cylinderHit(scene_.cylinders[primID], ray, tfar);
   const int m = impl_->geomToMesh[geomID];
   return triangleHit(scene_.meshes[m], impl_->meshConstants[m], m, primID, u, v, tfar);
 }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "geometry/cylinder_geometry.h"
+
 namespace rc {
 
 namespace {
@@ -24,6 +26,13 @@ void finiteSceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
         if (t[k] < m.positions.size()) add(m.positions[t[k]]);
   for (const Sphere& s : scene.spheres) {
     const Vec3 a = s.center - Vec3(s.radius), b = s.center + Vec3(s.radius);
+    if (!finite(a) || !finite(b)) continue;
+    add(a);
+    add(b);
+  }
+  for (const Cylinder& c : scene.cylinders) {
+    Vec3 a, b;
+    cylinderBounds(c, a, b);
     if (!finite(a) || !finite(b)) continue;
     add(a);
     add(b);

@@ -7,6 +7,7 @@
 #include "geometry/face_normal.h"
 #include "render/distribution.h"
 #include "render/envmap_light.h"
+#include "render/spot_light.h"
 
 namespace rc {
 
@@ -80,7 +81,7 @@ double sceneRadius(const Scene& scene, const std::vector<Emitter>& emitters) {
     for (const Vec3& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
   for (const Sphere& s : scene.spheres) lo = glm::min(lo, s.center - s.radius), hi = glm::max(hi, s.center + s.radius);
   for (const Emitter& e : emitters)
-    if (e.type == EmitterType::Point) lo = glm::min(lo, e.position), hi = glm::max(hi, e.position);
+    if (e.type == EmitterType::Point || e.type == EmitterType::Spot) lo = glm::min(lo, e.position), hi = glm::max(hi, e.position);
   return lo.x <= hi.x ? std::max(1e-6, 0.5 * static_cast<double>(glm::length(hi - lo))) : 1.0;
 }
 
@@ -153,6 +154,9 @@ LightSampler::LightSampler(const Scene& scene, const std::vector<Emitter>& emitt
     e.type = em.type;
     e.emitter = static_cast<int>(i);
     if (em.type == EmitterType::Point) addEntry(std::move(e), 4.0 * kPiD * luminance(em.intensity));
+    // A spot's power: its cone at full intensity (an upper bound is enough for light selection).
+    else if (em.type == EmitterType::Spot)
+      addEntry(std::move(e), 2.0 * kPiD * (1.0 - em.spotCosCutoff) * luminance(em.intensity));
     else if (em.type == EmitterType::Directional) addEntry(std::move(e), discArea * luminance(em.irradiance));
     else if (em.type == EmitterType::Constant)
       im.infinite.push_back(addEntry(std::move(e), discArea * kPiD * luminance(em.radiance)));
@@ -272,7 +276,9 @@ std::optional<LightSample> samplePoint(const Emitter& em, const Vec3& p, float p
   ls.wi = toLight / ls.dist;
   ls.delta = true;
   ls.pdf = 0.0f;
-  ls.radiance = em.intensity / (dist2 * pSel);
+  const float falloff = em.type == EmitterType::Spot ? spotFalloff(em, -ls.wi) : 1.0f;
+  if (!(falloff > 0.0f)) return std::nullopt;
+  ls.radiance = em.intensity * (falloff / (dist2 * pSel));
   ls.lightPoint = em.position;
   return ls;
 }
@@ -303,6 +309,7 @@ std::optional<LightSample> LightSampler::sample(const Vec3& p, Vec2 u, float uLi
       if (e.mesh >= 0) return sampleMesh(im.scene.meshes[e.mesh], e, p, u, pSel, em.radiance);
       return sampleSphere(im.scene.spheres[e.sphere], p, u, pSel, em.radiance);
     case EmitterType::Point:
+    case EmitterType::Spot:
       return samplePoint(em, p, pSel);
     case EmitterType::Directional: {
       LightSample ls;

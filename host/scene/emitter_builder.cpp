@@ -1,4 +1,6 @@
-// <emitter>: area (inside a shape), point, directional, constant, envmap.
+// <emitter>: area (inside a shape), point, spot, directional, constant, envmap.
+#include <cmath>
+
 #include "scene/envmap_loader.h"
 #include "scene/loader.h"
 
@@ -12,13 +14,45 @@ Color nonNegativeColor(const Element& e, const std::string& name, const Color& f
   return c;
 }
 
+// Mitsuba's spot: at to_world's origin, pointing along its +z. Parameters:
+//   intensity     spectrum  on-axis radiant intensity (W/sr), default 1; not spatially varying
+//   cutoff_angle  float     degrees from the axis beyond which it is black, default 20
+//   beam_width    float     degrees of full intensity, default 3/4 of cutoff_angle; linear
+//                           falloff in the angle between the two
+//   to_world      transform placement
+// `texture` (a projected image) is not supported.
+void buildSpot(const Element& e, Emitter& em) {
+  em.type = EmitterType::Spot;
+  em.intensity = nonNegativeColor(e, "intensity", Color(1.0f));
+  const float cutoff = e.located([&] { return e.props.getFloat("cutoff_angle", 20.0f); });
+  if (!(cutoff > 0.0f && cutoff <= 180.0f))
+    e.failParam("cutoff_angle", "'cutoff_angle' must be in (0, 180] degrees, got " + std::to_string(cutoff));
+  const float beam = e.located([&] { return e.props.getFloat("beam_width", cutoff * 0.75f); });
+  if (!(beam >= 0.0f && beam <= cutoff))
+    e.failParam("beam_width", "'beam_width' must be in [0, cutoff_angle] degrees, got " + std::to_string(beam));
+  em.spotCutoffRad = cutoff * kPi / 180.0f;
+  em.spotBeamRad = beam * kPi / 180.0f;
+  em.spotCosCutoff = std::cos(em.spotCutoffRad);
+  em.spotCosBeam = std::cos(em.spotBeamRad);
+  em.toWorld = e.transform("to_world");
+  const Mat3 linear(em.toWorld);
+  if (!(std::fabs(glm::determinant(linear)) > 0.0f)) e.failParam("to_world", "the spot's to_world is singular");
+  em.spotWorldToLocal = glm::inverse(linear);
+  em.position = Vec3(em.toWorld[3]);
+}
+
 }  // namespace
 
 void Loader::buildEmitter(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node, int shapeMesh, int shapeSphere) {
   const Element e = parseElement(file, node);
   const bool inShape = shapeMesh >= 0 || shapeSphere >= 0;
-  for (const pugi::xml_node& child : e.children) unexpectedChild(e, child);
   if (e.type.empty()) e.fail("missing attribute 'type'");
+  for (const pugi::xml_node& child : e.children) {
+    if (e.type == "spot" && std::string(child.name()) == "texture" && std::string(child.attribute("name").value()) == "texture")
+      unsupported(whereOf(*file, child) + ": the spot's projected 'texture' is not supported (the spot is rendered without it)");
+    else
+      unexpectedChild(e, child);
+  }
 
   Emitter em;
   if (e.type == "area") {
@@ -28,7 +62,7 @@ void Loader::buildEmitter(const std::shared_ptr<XmlFile>& file, const pugi::xml_
     em.mesh = shapeMesh;
     em.sphere = shapeSphere;
   } else if (inShape) {
-    if (e.type == "point" || e.type == "directional" || e.type == "constant" || e.type == "envmap")
+    if (e.type == "point" || e.type == "spot" || e.type == "directional" || e.type == "constant" || e.type == "envmap")
       e.fail("only an area emitter can be nested inside a <shape>");
     unsupported(e.where() + ": unknown plugin '" + e.type + "'");
     return;
@@ -39,6 +73,8 @@ void Loader::buildEmitter(const std::shared_ptr<XmlFile>& file, const pugi::xml_
       e.fail("give either 'position' or 'to_world', not both");
     em.position = e.props.has("position") ? e.located([&] { return e.props.getVector("position", Vec3(0.0f)); })
                                           : Vec3(e.transform("to_world")[3]);
+  } else if (e.type == "spot") {
+    buildSpot(e, em);
   } else if (e.type == "directional") {
     em.type = EmitterType::Directional;
     em.irradiance = nonNegativeColor(e, "irradiance", Color(1.0f));

@@ -2,7 +2,9 @@
 // Internal state of one loadScene() call, shared by the per-plugin builders (bsdf_builder.cpp,
 // shape_builder.cpp, emitter_builder.cpp, sensor_builder.cpp, integrator_builder.cpp).
 #include <cstdint>
+#include <filesystem>
 #include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,14 +35,18 @@ class Loader {
   std::string anonymousName(const std::string& type);  // "<type>#<n>"
 
   // Objects with an id, for <ref id> and duplicate detection.
-  enum class Kind { Bsdf, Emitter, Texture, Shape, Other };
+  enum class Kind { Bsdf, Emitter, Texture, Shape, Sampler, Other };
   struct Named {
     Kind kind = Kind::Other;
     BsdfPtr bsdf;
     TexturePtr texture;
+    std::string samplerType;  // Kind::Sampler: the settings a sensor referring to it takes
+    int sampleCount = 0;
+    uint64_t samplerSeed = 0;
     std::string where;
   };
-  void registerId(const Element& e, Kind kind, BsdfPtr bsdf = nullptr, TexturePtr texture = nullptr);
+  // Registers e's id (an element without one gets a placeholder entry nobody can refer to).
+  Named& registerId(const Element& e, Kind kind, BsdfPtr bsdf = nullptr, TexturePtr texture = nullptr);
   const Named& resolveRef(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref);
 
   BsdfPtr buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
@@ -51,8 +57,12 @@ class Loader {
   // Top-level emitters (shapeMesh = shapeSphere = -1) and area emitters of a shape.
   void buildEmitter(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node, int shapeMesh, int shapeSphere);
   void buildSensor(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
+  void buildTopLevelSampler(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
+  void useSampler(const Named& n, const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref);
   void buildIntegrator(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
 
+  // Substitutes $names in a direct child of <scene> (once; later calls do nothing).
+  void substituted(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& topLevelChild);
   // The top-level area emitter `id` names, or null.
   const std::pair<std::shared_ptr<XmlFile>, pugi::xml_node>* areaEmitter(const std::string& id) const;
 
@@ -62,6 +72,9 @@ class Loader {
  private:
   void processFile(const std::shared_ptr<XmlFile>& file, const std::string& includedFrom);
   void substituteTree(const std::shared_ptr<XmlFile>& file, pugi::xml_node node, bool topLevel);
+  std::string areaEmitterId(const pugi::xml_node& node) const;
+  std::vector<std::filesystem::path> resolverFolders() const;
+  std::filesystem::path includeTarget(const XmlFile& file, const std::string& filename) const;
   void sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
 
   LoadOptions options_;
@@ -73,9 +86,11 @@ class Loader {
   std::string mainDir_;
   std::vector<std::string> searchPaths_;       // <path value> folders, the latest first
   std::map<std::string, Named> ids_;
+  Named unnamed_;                               // registerId's answer for elements without an id
   // Top-level <emitter type="area" id> of each file read: Mitsuba attaches them to the shapes that
   // <ref> them, also from before their definition.
   std::map<std::string, std::pair<std::shared_ptr<XmlFile>, pugi::xml_node>> areaEmitters_;
+  std::set<const void*> substitutedNodes_;     // top-level elements already substituted
   std::map<const Bsdf*, int> bsdfIndices_;
   BsdfPtr defaultBsdf_;
   // Per built BSDF: its nesting depth and how many BSDFs one evaluation visits, counting a BSDF

@@ -35,14 +35,28 @@ struct Sphere {
   int emitter = -1;
 };
 
-enum class EmitterType { Area, Point, Directional, Constant, Envmap };
+// An analytic open cylinder (shape `cylinder`, no caps): the unit cylinder x² + y² = 1, 0 ≤ z ≤ 1
+// taken to world space by toWorld (Mitsuba's p0, p1, radius folded in; geometry/cylinder_geometry.h).
+struct Cylinder {
+  std::string name;
+  Mat4 toWorld{1.0f};
+  Mat4 toObject{1.0f};                 // inverse of toWorld
+  bool flipNormals = false;            // normals point toward the axis
+  int bsdf = -1;
+};
+
+enum class EmitterType { Area, Point, Directional, Constant, Envmap, Spot };
 
 struct Emitter {
   EmitterType type = EmitterType::Area;
   Color radiance{1.0f};       // area, constant
-  Color intensity{1.0f};      // point (W/sr)
+  Color intensity{1.0f};      // point, spot (W/sr; spot: on its axis)
   Color irradiance{1.0f};     // directional
-  Vec3 position{0.0f};        // point
+  Vec3 position{0.0f};        // point, spot
+  // spot (render/spot_light.h): angles in radians from the local +z, and the inverse of
+  // to_world's linear part that takes world directions into that frame
+  float spotCutoffRad = 0.0f, spotBeamRad = 0.0f, spotCosCutoff = 1.0f, spotCosBeam = 1.0f;
+  Mat3 spotWorldToLocal{1.0f};
   Vec3 direction{0, 0, 1};    // directional: direction light travels (world, unit)
   // envmap: lat-long image, Mitsuba convention (Y up in the emitter's local frame)
   std::string filename;
@@ -96,6 +110,7 @@ struct Scene {
   std::vector<BsdfPtr> bsdfs;
   std::vector<Mesh> meshes;
   std::vector<Sphere> spheres;
+  std::vector<Cylinder> cylinders;
   std::vector<Emitter> emitters;
   Camera camera;
   FilmSettings film;

@@ -64,13 +64,34 @@ void Loader::processFile(const std::shared_ptr<XmlFile>& file, const std::string
     if (std::string(a.name()) != "version")
       throw Error(whereOf(*file, root) + ": unsupported attribute '" + a.name() + "'");
 
-  // Substitution runs in document order so a <default> applies to what follows it, as in Mitsuba.
-  for (pugi::xml_node child : root.children()) substituteTree(file, child, true);
+  // Mitsuba substitutes in document order, one element after the other, with one parameter list
+  // for the whole load: a <default> applies to what follows it, also to the includer's elements
+  // after an <include> whose file defines it, and never to what came before.
   for (const pugi::xml_node& child : root.children("emitter"))
     if (std::string(child.attribute("type").value()) == "area" && child.attribute("id"))
-      areaEmitters_.emplace(child.attribute("id").value(), std::make_pair(file, child));
-  for (const pugi::xml_node& child : root.children())
-    if (child.type() == pugi::node_element) sceneChild(file, child);
+      areaEmitters_.emplace(areaEmitterId(child), std::make_pair(file, child));
+  for (pugi::xml_node child : root.children()) {
+    if (child.type() != pugi::node_element) continue;
+    substituted(file, child);
+    sceneChild(file, child);
+  }
+}
+
+std::string Loader::areaEmitterId(const pugi::xml_node& node) const {
+  // Shapes may <ref> an area emitter defined after them (Mitsuba resolves references once the
+  // whole file is read), so the id is taken before the emitter's own turn in document order.
+  try {
+    return substituteParams(node.attribute("id").value(), params_);
+  } catch (const Error&) {
+    return node.attribute("id").value();  // its own turn reports the undefined parameter
+  }
+}
+
+void Loader::substituted(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& topLevelChild) {
+  // Once per element: a shared area emitter is substituted when the first shape refers to it,
+  // which may be before its own turn.
+  if (!substitutedNodes_.insert(topLevelChild.internal_object()).second) return;
+  substituteTree(file, topLevelChild, true);
 }
 
 void Loader::substituteTree(const std::shared_ptr<XmlFile>& file, pugi::xml_node node, bool topLevel) {
@@ -80,7 +101,8 @@ void Loader::substituteTree(const std::shared_ptr<XmlFile>& file, pugi::xml_node
       const std::string s = substituteParams(a.value(), params_);
       if (s != a.value()) a.set_value(s.c_str());
     } catch (const Error& e) {
-      throw LocatedError(whereOf(*file, node) + ": attribute '" + a.name() + "': " + e.what());
+      throw LocatedError(whereOf(*file, node) + ": attribute '" + a.name() + "': " + e.what() +
+                         " (a <default> applies only to what follows it; -D name=value defines it for the whole file)");
     }
   }
   if (std::string(node.name()) == "default") {
@@ -111,8 +133,9 @@ void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     fs::path folder = value.value();
     if (folder.is_relative()) {
       fs::path found = (fs::path(file->path()).parent_path() / folder).lexically_normal();
-      for (auto it = searchPaths_.begin(); !fs::is_directory(found) && it != searchPaths_.end(); ++it)
-        found = (fs::path(*it) / folder).lexically_normal();
+      const std::vector<fs::path> folders = resolverFolders();
+      for (auto it = folders.begin(); !fs::is_directory(found) && it != folders.end(); ++it)
+        found = (*it / folder).lexically_normal();
       folder = found;
     }
     if (!fs::is_directory(folder))
@@ -126,9 +149,7 @@ void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     for (const pugi::xml_attribute& a : node.attributes())
       if (std::string(a.name()) != "filename")
         throw LocatedError(whereOf(*file, node) + ": unsupported attribute '" + a.name() + "'");
-    fs::path target = fn.value();
-    if (target.is_relative()) target = fs::path(file->path()).parent_path() / target;
-    target = target.lexically_normal();
+    const fs::path target = includeTarget(*file, fn.value());
     const std::string at = whereOf(*file, node);
     if (const std::string why = irregularFileReason(target.string()); !why.empty())
       throw LocatedError(at + ": included file '" + target.string() + (why == "not found" ? "' not found" : "': " + why));
@@ -167,7 +188,9 @@ void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     buildIntegrator(file, node);
   } else if (tag == "texture") {
     buildTexture(file, node);  // registers its id for <ref name="..." id="..."/> in BSDFs
-  } else if (tag == "film" || tag == "sampler" || tag == "rfilter") {
+  } else if (tag == "sampler") {
+    buildTopLevelSampler(file, node);
+  } else if (tag == "film" || tag == "rfilter") {
     throw LocatedError(whereOf(*file, node) + ": <" + tag + "> must be inside " +
                        (tag == "rfilter" ? "<film>" : "<sensor>"));
   } else if (isPropertyTag(tag) || tag == "transform" || tag == "ref") {
@@ -175,6 +198,30 @@ void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   } else {
     unsupported(whereOf(*file, node) + ": unknown element <" + tag + ">");
   }
+}
+
+std::vector<fs::path> Loader::resolverFolders() const {
+  // Mitsuba's file resolver while a file is read: the folders of the files including it
+  // (innermost first; each <include> prepends its file's folder), the <path> folders, the main
+  // scene's folder.
+  std::vector<fs::path> folders;
+  for (auto it = includeStack_.rbegin(); it != includeStack_.rend(); ++it) folders.push_back(fs::path(*it).parent_path());
+  for (const std::string& folder : searchPaths_) folders.push_back(folder);
+  folders.push_back(mainDir_);
+  return folders;
+}
+
+fs::path Loader::includeTarget(const XmlFile& file, const std::string& filename) const {
+  // Mitsuba's <include>: relative to the including file, then through the resolver's folders.
+  const fs::path name(filename);
+  if (name.is_absolute()) return name.lexically_normal();
+  const fs::path local = (fs::path(file.path()).parent_path() / name).lexically_normal();
+  if (fs::is_regular_file(local)) return local;
+  for (const fs::path& folder : resolverFolders()) {
+    const fs::path candidate = (folder / name).lexically_normal();
+    if (fs::is_regular_file(candidate)) return candidate;
+  }
+  return local;  // reported missing under the name relative to the including file
 }
 
 void Loader::unsupported(const std::string& locatedMessage) {
@@ -216,8 +263,8 @@ std::string Loader::anonymousName(const std::string& type) {
   return type + "#" + std::to_string(anonymousCount_[type]++);
 }
 
-void Loader::registerId(const Element& e, Kind kind, BsdfPtr bsdf, TexturePtr texture) {
-  if (e.id.empty()) return;
+Loader::Named& Loader::registerId(const Element& e, Kind kind, BsdfPtr bsdf, TexturePtr texture) {
+  if (e.id.empty()) return unnamed_ = Named();
   auto it = ids_.find(e.id);
   if (it != ids_.end()) e.fail("duplicate id '" + e.id + "' (first defined at " + it->second.where + ")");
   Named n;
@@ -225,7 +272,7 @@ void Loader::registerId(const Element& e, Kind kind, BsdfPtr bsdf, TexturePtr te
   n.bsdf = std::move(bsdf);
   n.texture = std::move(texture);
   n.where = e.file->location(e.node);
-  ids_[e.id] = n;
+  return ids_[e.id] = n;
 }
 
 const Loader::Named& Loader::resolveRef(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref) {

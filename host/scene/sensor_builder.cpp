@@ -1,4 +1,5 @@
-// <sensor type="perspective"> with its <film type="hdrfilm"> (and <rfilter>) and <sampler type="independent">.
+// <sensor type="perspective"> with its <film type="hdrfilm"> (and <rfilter>) and <sampler> (nested, or a
+// top-level one it refers to by id).
 #include <cmath>
 #include <cstdlib>
 
@@ -111,6 +112,28 @@ void buildSampler(Loader& loader, const Element& e, Scene& scene) {
 
 }  // namespace
 
+void Loader::useSampler(const Named& n, const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref) {
+  if (n.kind != Kind::Sampler)
+    throw LocatedError(whereOf(*file, ref) + ": id '" + std::string(ref.attribute("id").value()) + "' (defined at " +
+                       n.where + ") is not a sampler");
+  scene_.samplerType = n.samplerType;
+  scene_.sampleCount = n.sampleCount;
+  scene_.samplerSeed = n.samplerSeed;
+}
+
+void Loader::buildTopLevelSampler(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
+  // Mitsuba makes a top-level <sampler> like any object: a sensor uses it through <ref id>, and
+  // without a reference it has no effect. Its parameters are checked here either way.
+  const Element e = parseElement(file, node);
+  if (e.type.empty()) e.fail("missing attribute 'type'");
+  Scene settings;
+  buildSampler(*this, e, settings);
+  Named& n = registerId(e, Kind::Sampler);
+  n.samplerType = settings.samplerType;
+  n.sampleCount = settings.sampleCount;
+  n.samplerSeed = settings.samplerSeed;
+}
+
 void Loader::buildSensor(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
   const Element e = parseElement(file, node);
   if (e.type.empty()) e.fail("missing attribute 'type'");
@@ -171,6 +194,7 @@ void Loader::buildSensor(const std::shared_ptr<XmlFile>& file, const pugi::xml_n
     const std::string tag = child.name();
     if (tag == "film") buildFilm(*this, parseElement(file, child), scene_.film);
     else if (tag == "sampler") buildSampler(*this, parseElement(file, child), scene_);
+    else if (tag == "ref") useSampler(resolveRef(file, child), file, child);
     else unexpectedChild(e, child);
   }
   checkUnused(e);

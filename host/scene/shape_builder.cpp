@@ -1,6 +1,8 @@
-// <shape>: obj, ply, serialized, rectangle, cube, disk as world-space meshes; sphere as an analytic Sphere.
+// <shape>: obj, ply, serialized, rectangle, cube, disk as world-space meshes; sphere and cylinder as
+// analytic shapes.
 #include <cmath>
 
+#include "core/frame.h"
 #include "scene/loader.h"
 #include "scene/mesh_builder.h"
 #include "scene/obj_loader.h"
@@ -46,6 +48,37 @@ Sphere makeSphere(const Element& e, const Mat4& toWorld, const std::string& name
   return s;
 }
 
+// Mitsuba's cylinder: the unit cylinder placed by to_world · translate(p0) · frame(p1 − p0) ·
+// scale(radius, radius, |p1 − p0|). Parameters:
+//   p0, p1        point      the axis' end points, default (0,0,0) and (0,0,1)
+//   radius        float      default 1
+//   flip_normals  boolean    normals toward the axis, default false
+//   to_world      transform  applied after p0/p1/radius
+// An open tube (no caps); a mirroring to_world flips the normals back outward, as Mitsuba does.
+Cylinder makeCylinder(const Element& e, const Mat4& toWorld, const std::string& name, bool flip, int material) {
+  const Vec3 p0 = e.located([&] { return e.props.getVector("p0", Vec3(0.0f)); });
+  const Vec3 p1 = e.located([&] { return e.props.getVector("p1", Vec3(0.0f, 0.0f, 1.0f)); });
+  const float radius = e.located([&] { return e.props.getFloat("radius", 1.0f); });
+  if (!(radius > 0.0f)) e.failParam("radius", "radius must be positive, got " + std::to_string(radius));
+  const float length = glm::length(p1 - p0);
+  if (!(length > 0.0f)) e.failParam(e.props.has("p1") ? "p1" : "p0", "'p0' and 'p1' coincide");
+  const Frame axis = Frame::fromNormal((p1 - p0) / length);
+  Mat4 place(1.0f);
+  place[0] = Vec4(axis.t * radius, 0.0f);
+  place[1] = Vec4(axis.b * radius, 0.0f);
+  place[2] = Vec4(axis.n * length, 0.0f);
+  place[3] = Vec4(p0, 1.0f);
+  Cylinder c;
+  c.name = name;
+  c.toWorld = toWorld * place;
+  const float det = glm::determinant(Mat3(c.toWorld));
+  if (!(std::fabs(det) > 0.0f) || !std::isfinite(det)) e.failParam("to_world", "the cylinder's to_world is singular");
+  c.toObject = glm::inverse(c.toWorld);
+  c.flipNormals = det < 0.0f ? !flip : flip;
+  c.bsdf = material;
+  return c;
+}
+
 // The object-space triangles of a mesh shape, loaded from its file or generated; sets the
 // policy's face_normals where the type takes it. `resolve` turns the filename into a path.
 template <class Resolve>
@@ -82,7 +115,7 @@ MeshData shapeMeshData(const Element& e, MeshPolicy& policy, const Resolve& reso
 
 void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
   const Element e = parseElement(file, node);
-  static const char* kTypes[] = {"obj", "ply", "serialized", "rectangle", "cube", "disk", "sphere"};
+  static const char* kTypes[] = {"obj", "ply", "serialized", "rectangle", "cube", "disk", "sphere", "cylinder"};
   bool known = false;
   for (const char* t : kTypes) known = known || e.type == t;
   if (e.type.empty()) e.fail("missing attribute 'type'");
@@ -102,6 +135,7 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
       if (emitterNode) throw LocatedError(whereOf(*file, child) + ": a shape takes one emitter, this is the second");
       emitterFile = sharedEmitter->first;
       emitterNode = sharedEmitter->second;
+      substituted(emitterFile, emitterNode);
     } else if (tag == "bsdf" || tag == "ref") {
       if (bsdf) throw LocatedError(whereOf(*file, child) + ": a shape takes one bsdf, this is the second");
       if (tag == "bsdf") {
@@ -129,7 +163,13 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   const Mat4 toWorld = e.transform("to_world");
   int meshIndex = -1, sphereIndex = -1;
 
-  if (e.type == "sphere") {
+  if (e.type == "cylinder") {
+    if (emitterNode) {
+      unsupported(whereOf(*emitterFile, emitterNode) + ": an area emitter on a cylinder is not supported");
+      emitterNode = pugi::xml_node();  // lenient: the cylinder is kept without its emission
+    }
+    scene_.cylinders.push_back(makeCylinder(e, toWorld, name, flip, material));
+  } else if (e.type == "sphere") {
     sphereIndex = static_cast<int>(scene_.spheres.size());
     scene_.spheres.push_back(makeSphere(e, toWorld, name, flip, material));
   } else {
