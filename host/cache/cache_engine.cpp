@@ -128,7 +128,8 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
       // path continues: continuePaths starts that point's sequence afresh for the BSDF sample.
       const bool continues = continuesPath(sp);
       Rng rng = continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1);
-      const Bsdf& bsdf = *ctx_.scene.bsdfs[sp.hit.bsdf];
+      BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
+      const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf);
       const RenderContext& lights = directLightContext(sp);
       const Color L = continues             ? lightStrategyMis(lights, sp.hit, sp.frame, sp.wo, bsdf, rng, sp.lightSamples)
                       : bsdf.isDiffuseOnly() ? directLightLightOnly(lights, sp.hit, sp.frame, sp.wo, bsdf, rng)
@@ -537,7 +538,8 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, const std::vector<Sha
       const RadianceCache::Reader reader = cache.reader();
       uint64_t contributions = 0, count = 0;
       for (size_t i = b; i < e; ++i) {
-        const Bsdf& bsdf = *ctx_.scene.bsdfs[static_cast<size_t>(pts[i].hit.bsdf)];
+        BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
+        const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[static_cast<size_t>(pts[i].hit.bsdf)], pts[i].hit.uv, pointBsdf);
         if (!bsdf.isDiffuseOnly()) continue;
         lambertian[i] = 1;
         ++count;
@@ -651,7 +653,8 @@ void CacheEngine::shadeLambda(const std::vector<ShadePoint>& pts, size_t begin, 
         const float len = glm::length(d);
         d = len > 0.0f ? d / len : Vec3(0, 0, 1);
         if (d.z < 1e-2f) d = glm::normalize(Vec3(d.x, d.y, 1e-2f));
-        const Color f = ctx_.scene.bsdfs[sp.hit.bsdf]->eval(sp.wo, d) / d.z;
+        BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
+        const Color f = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf).eval(sp.wo, d) / d.z;
         const Color Lo = f * glm::max(E, Color(0.0f));
         slot(j) = isFinite(Lo) ? Lo : Color(0.0f);
       }
@@ -824,7 +827,8 @@ void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<
       Rng rng = shadePointRng(sp, 2);
       const Vec2 u = rng.next2D();
       const float uLobe = rng.nextFloat();
-      const auto s = ctx_.scene.bsdfs[sp.hit.bsdf]->sample(sp.wo, uLobe, u);
+      BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
+      const auto s = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf).sample(sp.wo, uLobe, u);
       if (!s || !isFinite(s->weight) || maxComponent(s->weight) <= 0.0f) continue;
       Color w = s->weight;
       if (sp.depth >= rrDepth_) {
