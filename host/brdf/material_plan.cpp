@@ -33,6 +33,8 @@ using Kind = BrdfTableSet::Kind;
 Kind classify(const Bsdf& bsdf) {
   const uint32_t lobes = bsdf.lobes();
   if (lobes & (kLobeDelta | kLobeTransmission)) return Kind::Sampled;
+  // Parameters textured per point (Bsdf::at): one table per material does not describe it.
+  if (bsdf.spatiallyVarying()) return Kind::Sampled;
   if (lobes == kLobeDiffuse) return Kind::Diffuse;
   if (lobes & kLobeGlossy) return Kind::Glossy;
   return Kind::Sampled;  // no continuous reflection lobe: nothing to cache

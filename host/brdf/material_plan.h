@@ -2,6 +2,7 @@
 // Per-material technique, SH order and BRDF×cos coefficient table (ARCHITECTURE.md §Pipeline, §Kernels
 //). For every BSDF of a scene:
 //   delta lobes or transmission        → "importance sampling" (no table)
+//   textured per point (Bsdf::at)      → "importance sampling" (no table)
 //   diffuse only                       → "irradiance cache": order-3 table of the clamped-cosine
 //                                        lobe (same table machinery as glossy, one cache)
 //   glossy                             → "radiance cache" at the smallest order whose worst

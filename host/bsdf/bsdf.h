@@ -61,9 +61,25 @@ class Bsdf {
   virtual Color tint(const Vec2& /*uv*/, const Vec3& /*wo*/) const { return Color(1.0f); }
   virtual bool tinted() const { return false; }
 
+  // A texture on a parameter that is not a factor on the whole BSDF (a roughness, plastic's
+  // diffuse_reflectance, a mask's opacity) makes the BSDF differ from point to point: at(uv) builds
+  // the BSDF at surface coordinates uv (uniform, with the textures' values there). The BSDF itself
+  // then describes the material with each textured parameter at the texture's mean. nullptr (the
+  // default) means the BSDF is the same everywhere; use bsdfAt() below.
+  virtual bool spatiallyVarying() const { return false; }
+  virtual std::shared_ptr<const Bsdf> at(const Vec2& /*uv*/) const { return nullptr; }
+
   std::string id;  // the scene's id attribute, or "<type>#<n>" when anonymous
 };
 
 using BsdfPtr = std::shared_ptr<const Bsdf>;
+
+// The BSDF at a surface point: `bsdf` itself unless it varies over the surface (Bsdf::at); then the
+// point's BSDF, which `holder` keeps alive.
+inline const Bsdf& bsdfAt(const Bsdf& bsdf, const Vec2& uv, BsdfPtr& holder) {
+  if (!bsdf.spatiallyVarying()) return bsdf;
+  holder = bsdf.at(uv);
+  return holder ? *holder : bsdf;
+}
 
 }  // namespace rc

@@ -2,8 +2,8 @@
 //
 // | parameter            | type               | default       | meaning                                    |
 // |----------------------|--------------------|---------------|--------------------------------------------|
-// | diffuse_reflectance  | rgb / float        | 0.5           | ρ of the base layer                         |
-// | specular_reflectance | rgb / float        | 1             | multiplier s of the coating's reflection    |
+// | diffuse_reflectance  | rgb / float / texture | 0.5        | ρ of the base layer                         |
+// | specular_reflectance | rgb / float / texture | 1          | multiplier s of the coating's reflection    |
 // | int_ior              | float / IOR name   | polypropylene (1.49) | interior IOR                        |
 // | ext_ior              | float / IOR name   | air (1.000277)       | exterior IOR                        |
 // | nonlinear            | boolean            | false         | ρ/(1 − ρ·Fdr) instead of ρ/(1 − Fdr)        |
@@ -11,10 +11,12 @@
 // Delta reflection s·F(θo) plus a diffuse lobe that accounts for the light trapped under the coating:
 //   f_d·cosθi = ρ/(1 − Fdr_int)·(1/η²)·(1 − F(θo))·(1 − F(θi))·cosθi/π, η = int/ext,
 // Fdr_int = fresnelDiffuseReflectance(1/η). Lobe choice: p_spec ∝ F(θo)·w_s, p_diff ∝ (1 − F(θo))·(1 − w_s),
-// w_s = mean(s)/(mean(ρ) + mean(s)).
+// w_s = mean(s)/(mean(ρ) + mean(s)). A texture on ρ or s makes the BSDF vary per point (Bsdf::at);
+// w_s stays that of the textures' means, as in Mitsuba.
 #include "bsdf/bsdf_params.h"
 #include "bsdf/fresnel.h"
 #include "bsdf/plugins.h"
+#include "bsdf/rough_textures.h"
 #include "bsdf/warp.h"
 
 namespace rc {
@@ -24,14 +26,15 @@ inline float meanOf(const Color& c) { return (c.r + c.g + c.b) / 3.0f; }
 
 class PlasticBsdf final : public Bsdf {
  public:
-  PlasticBsdf(const Color& diffuse, const Color& specular, float eta, bool nonlinear)
-      : diffuse_(diffuse), specular_(specular), eta_(eta), nonlinear_(nonlinear) {
+  PlasticBsdf(const Color& diffuse, const Color& specular, float eta, bool nonlinear, TexturePtr diffuseTexture,
+              TexturePtr specularTexture)
+      : eta_(eta), nonlinear_(nonlinear), diffuseTexture_(std::move(diffuseTexture)),
+        specularTexture_(std::move(specularTexture)) {
     invEta2_ = 1.0f / (eta * eta);
     fdrInt_ = fresnelDiffuseReflectance(1.0f / eta);
     const float dMean = meanOf(diffuse), sMean = meanOf(specular);
     specularSamplingWeight_ = sMean / (dMean + sMean);
-    const Color denom = nonlinear ? Color(1.0f) - diffuse * fdrInt_ : Color(1.0f - fdrInt_);
-    diffuseScaled_ = diffuse / denom;
+    setReflectances(diffuse, specular);
   }
 
   Color eval(const Vec3& wo, const Vec3& wi) const override {
@@ -66,27 +69,48 @@ class PlasticBsdf final : public Bsdf {
   uint32_t lobes() const override { return kLobeDiffuse | kLobeDelta; }
   std::string parameterKey() const override {
     return "plastic(diffuse_reflectance=" + hexColor(diffuse_) + ";specular_reflectance=" + hexColor(specular_) +
-           ";eta=" + hexFloat(eta_) + ";nonlinear=" + (nonlinear_ ? "1" : "0") + ")";
+           ";eta=" + hexFloat(eta_) + ";nonlinear=" + (nonlinear_ ? "1" : "0") +
+           (diffuseTexture_ ? ";diffuse_texture=" + textureFingerprint(*diffuseTexture_) : "") +
+           (specularTexture_ ? ";specular_texture=" + textureFingerprint(*specularTexture_) : "") + ")";
   }
   std::string typeName() const override { return "plastic"; }
 
+  bool spatiallyVarying() const override { return diffuseTexture_ || specularTexture_; }
+  BsdfPtr at(const Vec2& uv) const override {
+    if (!spatiallyVarying()) return nullptr;
+    auto point = std::make_shared<PlasticBsdf>(*this);
+    point->diffuseTexture_ = point->specularTexture_ = nullptr;
+    point->setReflectances(diffuseTexture_ ? diffuseTexture_->eval(uv) : diffuse_,
+                           specularTexture_ ? specularTexture_->eval(uv) : specular_);
+    return point;
+  }
+
  private:
+  void setReflectances(const Color& diffuse, const Color& specular) {
+    diffuse_ = diffuse;
+    specular_ = specular;
+    const Color denom = nonlinear_ ? Color(1.0f) - diffuse * fdrInt_ : Color(1.0f - fdrInt_);
+    diffuseScaled_ = diffuse / denom;
+  }
+
   float probDiffuse(float fo) const {
     const float pSpec = fo * specularSamplingWeight_, pDiff = (1.0f - fo) * (1.0f - specularSamplingWeight_);
     const float sum = pSpec + pDiff;
     return sum > 0.0f ? pDiff / sum : 0.0f;  // sum = 0 only for a black, index-matched coating
   }
 
-  Color diffuse_, specular_;
+  Color diffuse_{0.5f}, specular_{1.0f};
   float eta_;
   bool nonlinear_;
+  TexturePtr diffuseTexture_, specularTexture_;
   float invEta2_ = 1.0f, fdrInt_ = 0.0f, specularSamplingWeight_ = 0.5f;
   Color diffuseScaled_{0.0f};
 };
 
 }  // namespace
 
-std::shared_ptr<Bsdf> createPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>&) {
+std::shared_ptr<Bsdf> createPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>&,
+                                        const BsdfTextures& textures) {
   const Color diffuse = readReflectance(props, "diffuse_reflectance", 0.5f);
   const Color specular = readReflectance(props, "specular_reflectance", 1.0f);
   const float intIor = readIor(props, "int_ior", "polypropylene");
@@ -94,7 +118,9 @@ std::shared_ptr<Bsdf> createPlasticBsdf(const Properties& props, const std::vect
   const bool nonlinear = props.getBool("nonlinear", false);
   if (meanOf(diffuse) + meanOf(specular) <= 0.0f)
     throwParamError(props, "diffuse_reflectance", "diffuse and specular reflectance are both zero");
-  return std::make_shared<PlasticBsdf>(diffuse, specular, intIor / extIor, nonlinear);
+  return std::make_shared<PlasticBsdf>(diffuse, specular, intIor / extIor, nonlinear,
+                                       textureOf(textures, "diffuse_reflectance"),
+                                       textureOf(textures, "specular_reflectance"));
 }
 
 }  // namespace rc

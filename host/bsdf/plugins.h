@@ -4,21 +4,36 @@
 #include <vector>
 
 #include "bsdf/bsdf.h"
+#include "bsdf/bsdf_textures.h"
 #include "core/properties.h"
 
 namespace rc {
 
 using BsdfConstructor = std::shared_ptr<Bsdf> (*)(const Properties& props, const std::vector<BsdfPtr>& nested);
+// Plugins that evaluate textured parameters per point (Bsdf::at).
+using TexturedBsdfConstructor = std::shared_ptr<Bsdf> (*)(const Properties& props, const std::vector<BsdfPtr>& nested,
+                                                          const BsdfTextures& textures);
 
 std::shared_ptr<Bsdf> createDiffuseBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
-std::shared_ptr<Bsdf> createRoughConductorBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+std::shared_ptr<Bsdf> createRoughConductorBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
+                                               const BsdfTextures& textures);
 std::shared_ptr<Bsdf> createConductorBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
-std::shared_ptr<Bsdf> createPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
-std::shared_ptr<Bsdf> createRoughPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+std::shared_ptr<Bsdf> createPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
+                                        const BsdfTextures& textures);
+std::shared_ptr<Bsdf> createRoughPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
+                                             const BsdfTextures& textures);
 std::shared_ptr<Bsdf> createDielectricBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
 std::shared_ptr<Bsdf> createThinDielectricBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
 std::shared_ptr<Bsdf> createTwoSidedBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
-std::shared_ptr<Bsdf> createBlendBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+std::shared_ptr<Bsdf> createBlendBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
+                                      const BsdfTextures& textures);
 std::shared_ptr<Bsdf> createMerlBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+std::shared_ptr<Bsdf> createNullBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
+std::shared_ptr<Bsdf> createRoughDielectricBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
+                                                const BsdfTextures& textures);
+std::shared_ptr<Bsdf> createPrincipledBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
+                                           const BsdfTextures& textures);
+std::shared_ptr<Bsdf> createMaskBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
+                                     const BsdfTextures& textures);
 
 }  // namespace rc

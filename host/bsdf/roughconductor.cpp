@@ -3,25 +3,29 @@
 // | parameter            | type        | default   | meaning                                        |
 // |----------------------|-------------|-----------|------------------------------------------------|
 // | distribution         | string      | beckmann  | "beckmann" or "ggx"                            |
-// | alpha                | float       | 0.1       | isotropic roughness (> 0)                      |
-// | alpha_u, alpha_v     | float       | —         | anisotropic roughness along the frame's t / b  |
+// | alpha                | float / texture | 0.1   | isotropic roughness (> 0)                      |
+// | alpha_u, alpha_v     | float / texture | —     | anisotropic roughness along the frame's t / b  |
 // | sample_visible       | boolean     | true      | sample visible normals (else all normals)      |
 // | material             | string      | none      | "none" = F ≡ 1; named presets unsupported      |
 // | eta, k               | rgb / float | 0, 1      | complex relative IOR (eta 0, k 1 gives F ≡ 1)  |
 // | specular_reflectance | rgb / float | 1         | multiplier s                                    |
 //
 // f(wo, wi) = s·F(wo·h)·D(h)·G1(wo,h)·G1(wi,h) / (4 cosθo cosθi), h = normalize(wo + wi).
+// A texture on the roughness (Mitsuba's eval_1) makes the BSDF vary per point (Bsdf::at); s as a
+// texture is a factor on the whole BSDF (bsdf/textured.h).
 #include "bsdf/bsdf_params.h"
 #include "bsdf/conductor_fresnel.h"
 #include "bsdf/microfacet.h"
 #include "bsdf/plugins.h"
+#include "bsdf/rough_textures.h"
 
 namespace rc {
 namespace {
 
 class RoughConductorBsdf final : public Bsdf {
  public:
-  RoughConductorBsdf(const Microfacet& distr, const ConductorFresnel& fresnel) : distr_(distr), fresnel_(fresnel) {}
+  RoughConductorBsdf(const Microfacet& distr, const ConductorFresnel& fresnel, RoughnessTextures roughness)
+      : distr_(distr), fresnel_(fresnel), roughness_(std::move(roughness)) {}
 
   Color eval(const Vec3& wo, const Vec3& wi) const override {
     if (!(wo.z > 0.0f && wi.z > 0.0f)) return Color(0.0f);
@@ -60,22 +64,34 @@ class RoughConductorBsdf final : public Bsdf {
 
   uint32_t lobes() const override { return kLobeGlossy; }
   float glossyAlpha() const override { return std::fmin(distr_.alphaU(), distr_.alphaV()); }
-  bool isotropic() const override { return distr_.isotropic(); }
+  bool isotropic() const override { return distr_.isotropic() && roughness_.isotropic(); }
   std::string parameterKey() const override {
-    return "roughconductor(distr=" + distr_.key() + ";" + fresnel_.key() + ")";
+    return "roughconductor(distr=" + distr_.key() + ";" + fresnel_.key() +
+           (roughness_.textured() ? ";" + roughness_.key() : "") + ")";
   }
   std::string typeName() const override { return "roughconductor"; }
+
+  bool spatiallyVarying() const override { return roughness_.textured(); }
+  BsdfPtr at(const Vec2& uv) const override {
+    if (!roughness_.textured()) return nullptr;
+    auto point = std::make_shared<RoughConductorBsdf>(roughness_.distributionAt(distr_, uv), fresnel_,
+                                                      RoughnessTextures());
+    point->id = id;
+    return point;
+  }
 
  private:
   Microfacet distr_;
   ConductorFresnel fresnel_;
+  RoughnessTextures roughness_;
 };
 
 }  // namespace
 
-std::shared_ptr<Bsdf> createRoughConductorBsdf(const Properties& props, const std::vector<BsdfPtr>&) {
+std::shared_ptr<Bsdf> createRoughConductorBsdf(const Properties& props, const std::vector<BsdfPtr>&,
+                                               const BsdfTextures& textures) {
   const Microfacet distr = readMicrofacet(props, true);
-  return std::make_shared<RoughConductorBsdf>(distr, readConductorFresnel(props));
+  return std::make_shared<RoughConductorBsdf>(distr, readConductorFresnel(props), readRoughnessTextures(textures));
 }
 
 }  // namespace rc

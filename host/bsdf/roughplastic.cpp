@@ -2,8 +2,8 @@
 //
 // | parameter            | type             | default              | meaning                                |
 // |----------------------|------------------|----------------------|----------------------------------------|
-// | diffuse_reflectance  | rgb / float      | 0.5                  | ρ of the base layer                     |
-// | specular_reflectance | rgb / float      | 1                    | multiplier s of the coating reflection  |
+// | diffuse_reflectance  | rgb / float / texture | 0.5             | ρ of the base layer                     |
+// | specular_reflectance | rgb / float / texture | 1               | multiplier s of the coating reflection  |
 // | int_ior              | float / IOR name | polypropylene (1.49) | interior IOR                            |
 // | ext_ior              | float / IOR name | air (1.000277)       | exterior IOR                            |
 // | nonlinear            | boolean          | false                | ρ/(1 − ρ·R_int) instead of ρ/(1 − R_int) |
@@ -18,7 +18,9 @@
 // internal reflectance for light leaving the base — both computed at construction exactly as
 // Mitsuba does (Gauss–Legendre quadrature over visible normals, see microfacet.h).
 // Sampling: specular lobe with probability ∝ (1 − T(θo))·w_s, diffuse ∝ T(θo)·(1 − w_s),
-// w_s = mean(s)/(mean(ρ) + mean(s)); the returned pdf is the mixture, weight = eval/pdf.
+// w_s = mean(s)/(mean(ρ) + mean(s)); the returned pdf is the mixture, weight = eval/pdf. A texture
+// on ρ or s makes the BSDF vary per point (Bsdf::at); w_s stays that of the textures' means and α
+// is a plain number, as in Mitsuba.
 #include <array>
 #include <map>
 #include <mutex>
@@ -28,6 +30,7 @@
 #include "bsdf/fresnel.h"
 #include "bsdf/microfacet.h"
 #include "bsdf/plugins.h"
+#include "bsdf/rough_textures.h"
 #include "bsdf/warp.h"
 
 namespace rc {
@@ -71,15 +74,16 @@ std::shared_ptr<const InterfaceTables> interfaceTables(const Microfacet& distr, 
 
 class RoughPlasticBsdf final : public Bsdf {
  public:
-  RoughPlasticBsdf(const Microfacet& distr, const Color& diffuse, const Color& specular, float eta, bool nonlinear)
-      : distr_(distr), diffuse_(diffuse), specular_(specular), eta_(eta), nonlinear_(nonlinear) {
+  RoughPlasticBsdf(const Microfacet& distr, const Color& diffuse, const Color& specular, float eta, bool nonlinear,
+                   TexturePtr diffuseTexture, TexturePtr specularTexture)
+      : distr_(distr), eta_(eta), nonlinear_(nonlinear), diffuseTexture_(std::move(diffuseTexture)),
+        specularTexture_(std::move(specularTexture)) {
     invEta2_ = 1.0f / (eta * eta);
     const float dMean = meanOf(diffuse), sMean = meanOf(specular);
     specularSamplingWeight_ = sMean / (dMean + sMean);
     tables_ = interfaceTables(distr, eta);
     internalReflectance_ = tables_->internalReflectance;
-    const Color denom = nonlinear ? Color(1.0f) - diffuse * internalReflectance_ : Color(1.0f - internalReflectance_);
-    diffuseScaled_ = diffuse / denom;
+    setReflectances(diffuse, specular);
   }
 
   float externalTransmittance(float cosTheta) const {
@@ -136,11 +140,31 @@ class RoughPlasticBsdf final : public Bsdf {
   std::string parameterKey() const override {
     return "roughplastic(distr=" + distr_.key() + ";diffuse_reflectance=" + hexColor(diffuse_) +
            ";specular_reflectance=" + hexColor(specular_) + ";eta=" + hexFloat(eta_) +
-           ";nonlinear=" + (nonlinear_ ? "1" : "0") + ")";
+           ";nonlinear=" + (nonlinear_ ? "1" : "0") +
+           (diffuseTexture_ ? ";diffuse_texture=" + textureFingerprint(*diffuseTexture_) : "") +
+           (specularTexture_ ? ";specular_texture=" + textureFingerprint(*specularTexture_) : "") + ")";
   }
   std::string typeName() const override { return "roughplastic"; }
 
+  bool spatiallyVarying() const override { return diffuseTexture_ || specularTexture_; }
+  BsdfPtr at(const Vec2& uv) const override {
+    if (!spatiallyVarying()) return nullptr;
+    auto point = std::make_shared<RoughPlasticBsdf>(*this);  // shares the interface tables
+    point->diffuseTexture_ = point->specularTexture_ = nullptr;
+    point->setReflectances(diffuseTexture_ ? diffuseTexture_->eval(uv) : diffuse_,
+                           specularTexture_ ? specularTexture_->eval(uv) : specular_);
+    return point;
+  }
+
  private:
+  void setReflectances(const Color& diffuse, const Color& specular) {
+    diffuse_ = diffuse;
+    specular_ = specular;
+    const Color denom =
+        nonlinear_ ? Color(1.0f) - diffuse * internalReflectance_ : Color(1.0f - internalReflectance_);
+    diffuseScaled_ = diffuse / denom;
+  }
+
   float probSpecular(float cosThetaO) const {
     const float t = externalTransmittance(cosThetaO);
     const float pSpec = (1.0f - t) * specularSamplingWeight_, pDiff = t * (1.0f - specularSamplingWeight_);
@@ -149,9 +173,10 @@ class RoughPlasticBsdf final : public Bsdf {
   }
 
   Microfacet distr_;
-  Color diffuse_, specular_;
+  Color diffuse_{0.5f}, specular_{1.0f};
   float eta_;
   bool nonlinear_;
+  TexturePtr diffuseTexture_, specularTexture_;
   float invEta2_ = 1.0f, specularSamplingWeight_ = 0.5f, internalReflectance_ = 0.0f;
   std::shared_ptr<const InterfaceTables> tables_;
   Color diffuseScaled_{0.0f};
@@ -159,7 +184,8 @@ class RoughPlasticBsdf final : public Bsdf {
 
 }  // namespace
 
-std::shared_ptr<Bsdf> createRoughPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>&) {
+std::shared_ptr<Bsdf> createRoughPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>&,
+                                             const BsdfTextures& textures) {
   const Color diffuse = readReflectance(props, "diffuse_reflectance", 0.5f);
   const Color specular = readReflectance(props, "specular_reflectance", 1.0f);
   const float intIor = readIor(props, "int_ior", "polypropylene");
@@ -168,7 +194,9 @@ std::shared_ptr<Bsdf> createRoughPlasticBsdf(const Properties& props, const std:
   if (meanOf(diffuse) + meanOf(specular) <= 0.0f)
     throwParamError(props, "diffuse_reflectance", "diffuse and specular reflectance are both zero");
   const Microfacet distr = readMicrofacet(props, false);
-  return std::make_shared<RoughPlasticBsdf>(distr, diffuse, specular, intIor / extIor, nonlinear);
+  return std::make_shared<RoughPlasticBsdf>(distr, diffuse, specular, intIor / extIor, nonlinear,
+                                            textureOf(textures, "diffuse_reflectance"),
+                                            textureOf(textures, "specular_reflectance"));
 }
 
 }  // namespace rc

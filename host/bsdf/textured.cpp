@@ -1,5 +1,7 @@
 #include "bsdf/textured.h"
 
+#include "bsdf/bsdf_params.h"
+
 namespace rc {
 namespace {
 
@@ -19,13 +21,43 @@ class TexturedBsdf final : public Bsdf {
   std::string typeName() const override { return unit_->typeName(); }
   Color tint(const Vec2& uv, const Vec3&) const override { return factor_->eval(uv); }
   bool tinted() const override { return true; }
+  bool spatiallyVarying() const override { return unit_->spatiallyVarying(); }
+  BsdfPtr at(const Vec2& uv) const override {
+    BsdfPtr unitHere = unit_->at(uv);
+    return unitHere ? std::make_shared<TexturedBsdf>(std::move(unitHere), factor_) : nullptr;
+  }
 
  private:
   BsdfPtr unit_;
   TexturePtr factor_;
 };
 
+class TintBakedBsdf final : public Bsdf {
+ public:
+  TintBakedBsdf(BsdfPtr tinted, const Vec2& uv) : tinted_(std::move(tinted)), uv_(uv) { id = tinted_->id; }
+  Color eval(const Vec3& wo, const Vec3& wi) const override { return tinted_->tint(uv_, wo) * tinted_->eval(wo, wi); }
+  float pdf(const Vec3& wo, const Vec3& wi) const override { return tinted_->pdf(wo, wi); }
+  std::optional<BsdfSample> sample(const Vec3& wo, float u1, const Vec2& u2) const override {
+    auto s = tinted_->sample(wo, u1, u2);
+    if (s) s->weight *= tinted_->tint(uv_, wo);
+    return s;
+  }
+  uint32_t lobes() const override { return tinted_->lobes(); }
+  float glossyAlpha() const override { return tinted_->glossyAlpha(); }
+  bool isotropic() const override { return tinted_->isotropic(); }
+  std::string parameterKey() const override {
+    return "tint_at(" + hexFloat(uv_.x) + "," + hexFloat(uv_.y) + ";" + tinted_->parameterKey() + ")";
+  }
+  std::string typeName() const override { return tinted_->typeName(); }
+
+ private:
+  BsdfPtr tinted_;
+  Vec2 uv_;
+};
+
 }  // namespace
+
+BsdfPtr bakeTint(BsdfPtr tinted, const Vec2& uv) { return std::make_shared<TintBakedBsdf>(std::move(tinted), uv); }
 
 BsdfPtr makeTexturedBsdf(BsdfPtr unit, TexturePtr factor) {
   return std::make_shared<TexturedBsdf>(std::move(unit), std::move(factor));

@@ -47,6 +47,14 @@ class TwoSidedBsdf final : public Bsdf {
     return wo.z < 0.0f ? back_->tint(uv, flipZ(wo)) : front_->tint(uv, wo);
   }
   bool tinted() const override { return front_->tinted() || back_->tinted(); }
+  bool spatiallyVarying() const override { return front_->spatiallyVarying() || back_->spatiallyVarying(); }
+  BsdfPtr at(const Vec2& uv) const override {
+    if (!spatiallyVarying()) return nullptr;
+    BsdfPtr front = front_->at(uv), back = back_ == front_ ? front : back_->at(uv);
+    auto point = std::make_shared<TwoSidedBsdf>(front ? front : front_, back ? back : back_);
+    point->id = id;
+    return point;
+  }
 
  private:
   BsdfPtr front_, back_;
@@ -64,7 +72,8 @@ std::shared_ptr<Bsdf> createTwoSidedBsdf(const Properties& props, const std::vec
     if (nested.size() == 2 && b->tinted())
       throw Error("<bsdf type=\"twosided\">: a textured reflectance on one of two different sides is not supported");
     // Mitsuba accepts only one-sided BSDFs here; these two already have a back side.
-    if (b->typeName() == "twosided" || b->typeName() == "dielectric" || b->typeName() == "thindielectric")
+    if (b->typeName() == "twosided" || b->typeName() == "dielectric" || b->typeName() == "thindielectric" ||
+        b->typeName() == "roughdielectric")
       throw Error("<bsdf type=\"twosided\">: nested '" + b->typeName() + "' is already two-sided");
   }
   (void)props;

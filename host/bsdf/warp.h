@@ -31,4 +31,14 @@ inline Vec3 reflectZ(const Vec3& w) { return Vec3(-w.x, -w.y, w.z); }
 // Mirror about a microfacet normal m.
 inline Vec3 reflectAbout(const Vec3& w, const Vec3& m) { return 2.0f * glm::dot(w, m) * m - w; }
 
+// v with the sign of s applied (Dr.Jit's mulsign: s < 0 flips it).
+inline Vec3 mulSign(const Vec3& v, float s) { return s < 0.0f ? -v : v; }
+
+// Half vector of a rough dielectric interface (Walter et al.): normalize(wo + η_r·wi) with η_r = 1
+// for reflection, else the relative IOR η seen from wo, turned to the normal's side.
+inline Vec3 generalizedHalfVector(const Vec3& wo, const Vec3& wi, bool reflect, float eta) {
+  const Vec3 m = glm::normalize(wo + wi * (reflect ? 1.0f : eta));
+  return mulSign(m, m.z);
+}
+
 }  // namespace rc

@@ -1,6 +1,7 @@
 #include "cache/cache_engine.h"
 
 #include <algorithm>
+#include <deque>
 #include <cmath>
 
 #include "cache/direct_light_batch.h"
@@ -170,8 +171,11 @@ void CacheEngine::radianceOut(PointView pts, std::vector<Color>& out, float rela
     thread_local std::vector<uint32_t> jobPoint;
     thread_local std::vector<Color> L;
     thread_local DirectLightScratch scratch;
+    // The jobs point at these; a deque keeps them in place as it grows.
+    thread_local std::deque<BsdfPtr> holders;
     jobs.clear();
     jobPoint.clear();
+    holders.clear();
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& sp = pts[i];
       if (!sp.active) continue;
@@ -182,7 +186,8 @@ void CacheEngine::radianceOut(PointView pts, std::vector<Color>& out, float rela
       // its light sample from the record's low-discrepancy sequence (buildRecords), unless its
       // path continues: continuePaths starts that point's sequence afresh for the BSDF sample.
       const bool continues = continuesPath(sp);
-      const Bsdf& bsdf = *ctx_.scene.bsdfs[sp.hit.bsdf];
+      BsdfPtr& pointBsdf = holders.emplace_back();  // a spatially varying BSDF at this point (Bsdf::at)
+      const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf);
       jobs.push_back({&directLightContext(sp), &sp.hit, sp.frame, sp.wo, &bsdf,
                       continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1),
                       continues               ? DirectEstimator::LightStrategy
@@ -600,7 +605,8 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, PointView pts,
       const RadianceCache::Reader reader = cache.reader();
       uint64_t contributions = 0, count = 0;
       for (size_t i = b; i < e; ++i) {
-        const Bsdf& bsdf = *ctx_.scene.bsdfs[static_cast<size_t>(pts[i].hit.bsdf)];
+        BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
+        const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[static_cast<size_t>(pts[i].hit.bsdf)], pts[i].hit.uv, pointBsdf);
         if (!bsdf.isDiffuseOnly()) continue;
         lambertian[i] = 1;
         ++count;
@@ -724,7 +730,8 @@ void CacheEngine::shadeLambda(PointView pts, size_t begin, size_t count, int ord
         const float len = glm::length(d);
         d = len > 0.0f ? d / len : Vec3(0, 0, 1);
         if (d.z < 1e-2f) d = glm::normalize(Vec3(d.x, d.y, 1e-2f));
-        const Color f = ctx_.scene.bsdfs[sp.hit.bsdf]->eval(sp.wo, d) / d.z;
+        BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
+        const Color f = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf).eval(sp.wo, d) / d.z;
         const Color Lo = f * glm::max(E, Color(0.0f));
         slot(j) = isFinite(Lo) ? Lo : Color(0.0f);
       }
@@ -900,7 +907,8 @@ void CacheEngine::continuePaths(PointView pts, std::vector<Color>& out, float re
       Rng rng = shadePointRng(sp, 2);
       const Vec2 u = rng.next2D();
       const float uLobe = rng.nextFloat();
-      const auto s = ctx_.scene.bsdfs[sp.hit.bsdf]->sample(sp.wo, uLobe, u);
+      BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
+      const auto s = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf).sample(sp.wo, uLobe, u);
       if (!s || !isFinite(s->weight) || maxComponent(s->weight) <= 0.0f) continue;
       Color w = s->weight;
       if (sp.depth >= rrDepth_) {

@@ -71,7 +71,8 @@ void fillPoints(const RcacheRun& run, const PassPoints& pass, size_t begin, size
       for (size_t i = b; i < e; ++i) {
         if (!isCached(run.engine.technique(pts[i]))) continue;
         Rng rng(pts[i].seed, kStreamFillDirectLight);
-        const Bsdf& bsdf = *run.ctx.scene.bsdfs[pts[i].hit.bsdf];
+        BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
+        const Bsdf& bsdf = bsdfAt(*run.ctx.scene.bsdfs[pts[i].hit.bsdf], pts[i].hit.uv, pointBsdf);
         const Color d = directLight(run.ctx, pts[i].hit, pts[i].frame, pts[i].wo, bsdf, rng);
         base[i] = luminance(d + prim[i].Le);
       }

@@ -231,7 +231,8 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
         s.prim[i] = run_.primaries.of(filmPos[k], y * W + x, sampleSeed, rays[k], hits[k]);
         ShadePoint& sp = s.prim[i].sp;
         if (sp.active && withinMaxDepth(maxDepth, 2)) {
-          const Bsdf& bsdf = *run_.ctx.scene.bsdfs[sp.hit.bsdf];
+          BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
+          const Bsdf& bsdf = bsdfAt(*run_.ctx.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf);
           sp.lightSamples = params.lightSamples;
           bool lightOnly = false;
           // Importance-sampled points: the continuation's ray doubles as the BSDF sample.

@@ -56,7 +56,9 @@ FallbackDecision decideFallback(const RcacheRun& run) {
       if (!engine.continuesPath(sp)) continue;
       Rng rng(sp.seed, 0);
       const Vec2 u = rng.next2D();
-      const std::optional<BsdfSample> bs = run.ctx.scene.bsdfs[sp.hit.bsdf]->sample(sp.wo, rng.nextFloat(), u);
+      BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
+      const std::optional<BsdfSample> bs =
+          bsdfAt(*run.ctx.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf).sample(sp.wo, rng.nextFloat(), u);
       if (!bs || !(maxComponent(bs->weight) > 0.0f)) continue;
       const Vec3 dir = sp.frame.toWorld(bs->wi);
       const Hit next = run.ctx.accel.intersect(Accel::spawnRay(sp.hit, dir));

@@ -213,7 +213,7 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
     im.sphereData.spheres = &scene.spheres;
     for (const Sphere& s : scene.spheres) {
       const bool known = s.bsdf >= 0 && s.bsdf < static_cast<int>(scene.bsdfs.size()) && scene.bsdfs[s.bsdf];
-      im.sphereUv.push_back(known && scene.bsdfs[s.bsdf]->tinted() ? 1 : 0);
+      im.sphereUv.push_back(known && (scene.bsdfs[s.bsdf]->tinted() || scene.bsdfs[s.bsdf]->spatiallyVarying()) ? 1 : 0);
     }
     RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(g, static_cast<unsigned>(scene.spheres.size()));

@@ -38,7 +38,8 @@ Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings,
     // Mitsuba: a vertex may extend the path only while the path has fewer than max_depth segments.
     if (maxDepth >= 0 && depth + 1 >= maxDepth) break;
     if (hit.bsdf < 0 || hit.bsdf >= static_cast<int>(scene.bsdfs.size()) || !scene.bsdfs[hit.bsdf]) break;
-    const Bsdf& bsdf = *scene.bsdfs[hit.bsdf];
+    BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
+    const Bsdf& bsdf = bsdfAt(*scene.bsdfs[hit.bsdf], hit.uv, pointBsdf);
     const Frame frame = hit.frame();
     const Vec3 wo = frame.toLocal(-ray.d);
     // A textured factor scales everything this vertex reflects (Bsdf::tint), not its emission.

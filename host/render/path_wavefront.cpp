@@ -85,7 +85,8 @@ class BounceShader {
     if (settings_.maxDepth >= 0 && depth_ + 1 >= settings_.maxDepth) return;
     const std::vector<BsdfPtr>& bsdfs = ctx_.scene.bsdfs;
     if (hit.bsdf < 0 || hit.bsdf >= static_cast<int>(bsdfs.size()) || !bsdfs[hit.bsdf]) return;
-    const Bsdf& bsdf = *bsdfs[hit.bsdf];
+    BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
+    const Bsdf& bsdf = bsdfAt(*bsdfs[hit.bsdf], hit.uv, pointBsdf);
     const Frame frame = hit.frame();
     const Vec3 wo = frame.toLocal(-ray.d);
     // A textured factor scales everything this vertex reflects (Bsdf::tint), not its emission.

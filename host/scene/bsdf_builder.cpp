@@ -77,6 +77,7 @@ BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_
     return bsdf;
   }
   TexturePtr factor;
+  BsdfTextures perPoint;
   for (const auto& [child, texture] : textures) {
     const std::string name = child.attribute("name").value();
     if (e.props.has(name) || (factor && isBsdfFactorParameter(e.type, name)))
@@ -88,20 +89,26 @@ BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_
     if (texture && isBsdfFactorParameter(e.type, name)) {
       factor = texture;  // the BSDF is built with this parameter 1 and scaled per point
     } else {
-      if (texture)
+      if (texture && isBsdfTextureParameter(e.type, name))
+        perPoint[name] = texture;  // evaluated per point by the BSDF (Bsdf::at); the mean stands in
+      else if (texture)
         unsupported(whereOf(*file, child) + ": a texture on parameter '" + name + "' of <bsdf type=\"" + e.type +
-                    "\"> is not supported (textures scale diffuse 'reflectance' and conductor "
-                    "'specular_reflectance'); lenient: its mean value");
+                    "\"> is not supported (textured parameters: diffuse 'reflectance', conductor "
+                    "'specular_reflectance', the roughness of rough conductors/dielectrics, plastic "
+                    "reflectances, mask 'opacity', principled); lenient: its mean value");
       const Color mean = texture ? texture->mean() : Color(0.5f);
       p.vec = mean;
       if (mean.r == mean.g && mean.g == mean.b) {  // grey: also valid for float parameters
         p.type = Property::Type::Float;
         p.number = mean.r;
+      } else if (perPoint.count(name) && !isBsdfColorTextureParameter(e.type, name)) {
+        p.type = Property::Type::Float;  // a scalar parameter: Mitsuba's eval_1 of the texture
+        p.number = luminance(mean);
       }
     }
     e.props.set(name, p);
   }
-  bsdf = e.located([&] { return createBsdf(e.props, nested, e.id); });
+  bsdf = e.located([&] { return createBsdf(e.props, nested, e.id, perPoint); });
   if (!bsdf) e.fail("the BSDF factory returned nothing");
   checkUnused(e);
   if (factor) bsdf = makeTexturedBsdf(bsdf, factor);

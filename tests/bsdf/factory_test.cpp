@@ -29,9 +29,9 @@ void expectError(const Properties& p, const std::vector<BsdfPtr>& nested, const 
 
 TEST(BsdfFactory, KnownTypes) {
   for (const char* t : {"diffuse", "roughconductor", "conductor", "plastic", "roughplastic", "dielectric", "thindielectric", "twosided",
-                        "blendbsdf"})
+                        "blendbsdf", "roughdielectric", "null", "mask", "principled"})
     EXPECT_TRUE(isKnownBsdfType(t)) << t;
-  EXPECT_FALSE(isKnownBsdfType("roughdielectric"));
+  EXPECT_FALSE(isKnownBsdfType("principledthin"));
   expectError(props("nosuch"), {}, "unknown BSDF plugin 'nosuch'");
 }
 

@@ -87,13 +87,13 @@ TEST(Textures, TexturedReflectanceScalesAUnitBsdf) {
 
 TEST(Textures, UnsupportedTexturedParametersAreNamed) {
   TempDir dir;
-  const std::string plastic = sceneXml("<shape type=\"rectangle\"><bsdf type=\"plastic\">\n"
-                                       "<texture type=\"checkerboard\" name=\"diffuse_reflectance\"/></bsdf></shape>");
-  expectError([&] { loadText(dir, plastic); }, {"scene.xml:4:", "texture on parameter 'diffuse_reflectance'", "not supported"});
+  const std::string dielectric = sceneXml("<shape type=\"rectangle\"><bsdf type=\"dielectric\">\n"
+                                       "<texture type=\"checkerboard\" name=\"specular_transmittance\"/></bsdf></shape>");
+  expectError([&] { loadText(dir, dielectric); }, {"scene.xml:4:", "texture on parameter 'specular_transmittance'", "not supported"});
   LoadOptions lenient;
   lenient.lenient = true;
   std::vector<std::string> warnings;
-  const Scene s = loadText(dir, plastic, lenient, &warnings);
+  const Scene s = loadText(dir, dielectric, lenient, &warnings);
   EXPECT_EQ(warnings.size(), 1u);
   EXPECT_FALSE(s.bsdfs.at(0)->tinted());
   expectError([&] { loadText(dir, sceneXml("<texture type=\"bitmap\"><string name=\"filename\" value=\"none.png\"/></texture>")); },
