@@ -139,7 +139,9 @@ TEST(SceneFormatRender, CylinderUnderADirectionalLightMatchesTheClosedForm) {
   for (const bool cache : {false, true}) {
     const auto settings = cache ? rcacheSettings(s, {{"fallback", "false"}}) : pathSettings(s);
     const int lit = expectImageMatches(renderScene(s, settings, 64, 1).image, expected, 64, cache ? "rcache" : "path");
-    EXPECT_GT(lit, 100);
+    // Not vacuous: the tube spans about 9×9 of the 24×24 pixels (1 unit at distance 5 under a 30° fov,
+    // ≈ 9 px per unit), and the light reaches about three quarters of its visible width.
+    EXPECT_GT(lit, 60);
   }
 }
 

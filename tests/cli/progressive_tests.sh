@@ -42,7 +42,10 @@ else fail path_passes_equal_spp "max abs difference $max_abs after $passes passe
 
 # rcache: the same render within noise. Its passes share the fill and the sample streams of the
 # fixed-spp render (only records made on the way, and when bands are shaded again, differ), so it is
-# much closer to that render than a render with another seed is (measured: 15× in relMSE; asserted 3×).
+# closer to that render than a render with another seed is. The margin depends on how many passes
+# the machine fits into the budget: the other seed's difference falls with spp, the records made on
+# the way do not (measured on tiny.xml: 15× at 2.8k spp, 2.8× at 8.6k, 2.2× at 24.6k), so only
+# "closer than another seed" is asserted — a wrong pass weighting or stream overlap fails it.
 passes=$(stat_of "$TMP/rcache.json" passes)
 for seed in 5 6; do
   "$RC" "$DATA/tiny.xml" --integrator rcache --spp "$passes" --seed $seed "${params[@]}" --quiet -t 2 \
@@ -50,7 +53,7 @@ for seed in 5 6; do
 done
 same_seed=$("$RC" diff "$TMP/rcache.exr" "$TMP/rcache_5.exr" --json | sed -n 's/.*"relmse": \([-0-9.e+]*\).*/\1/p')
 other_seed=$("$RC" diff "$TMP/rcache_6.exr" "$TMP/rcache_5.exr" --json | sed -n 's/.*"relmse": \([-0-9.e+]*\).*/\1/p')
-if [ -n "$same_seed" ] && less "$(awk -v a="$same_seed" 'BEGIN { print 3 * a }')" "$other_seed"; then pass rcache_passes_within_noise
+if [ -n "$same_seed" ] && less "$same_seed" "$other_seed"; then pass rcache_passes_within_noise
 else fail rcache_passes_within_noise "relMSE to the ${passes}-spp render $same_seed, another seed's $other_seed"; fi
 
 # A render the budget ended is finished, not stopped: the cache is saved, nothing says interrupted.
