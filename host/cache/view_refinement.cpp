@@ -12,7 +12,7 @@ size_t skipCoarseRecords(CacheEngine& engine, const RcacheParams& params) {
     std::vector<uint8_t> mask(cache->size(), 0);
     for (size_t i = 0; i < mask.size(); ++i) {
       const RecordInfo r = cache->info(static_cast<uint32_t>(i));
-      const float bound = params.rMaxPx * levelScale * engine.footprint(r.p);
+      const float bound = params.rMaxPx * levelScale * engine.footprint(r.p, key.level);
       if (r.a * r.R > kCoarseRecordTolerance * bound) mask[i] = 1, ++skipped;
     }
     cache->setSkipped(std::move(mask));
