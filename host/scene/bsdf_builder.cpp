@@ -16,22 +16,10 @@ namespace {
 constexpr uint64_t kMaxBsdfTreeNodes = 4096;
 }  // namespace
 
-BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
-  Element e = parseElement(file, node);
-  if (e.type.empty()) e.fail("missing attribute 'type'");
-  // A BSDF's data file (merl's measured table) is found like a mesh: relative to the scene file.
-  if (auto it = e.raw.find("filename");
-      it != e.raw.end() && !it->second.empty() && node.find_child_by_attribute("string", "name", "filename")) {
-    Property resolved;
-    resolved.type = Property::Type::String;
-    resolved.text = resolvePath(e, it->second);
-    resolved.line = e.props.lineOf("filename");
-    e.props.set("filename", resolved);
-  }
-  std::vector<BsdfPtr> nested;
-  // Textured parameters: <texture name="p"> or <ref name="p" id="a texture"/>; null = a texture
-  // lenient mode left out.
-  std::vector<std::pair<pugi::xml_node, TexturePtr>> textures;
+// The nested BSDFs and the textured parameters of a <bsdf>: <texture name="p"> or <ref name="p"
+// id="a texture"/> (a null texture: one lenient mode left out).
+void Loader::collectBsdfChildren(const std::shared_ptr<XmlFile>& file, const Element& e, std::vector<BsdfPtr>& nested,
+                                 std::vector<std::pair<pugi::xml_node, TexturePtr>>& textures) {
   for (const pugi::xml_node& child : e.children) {
     const std::string tag = child.name();
     if (tag == "bsdf") {
@@ -54,7 +42,10 @@ BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_
       unexpectedChild(e, child);
     }
   }
+}
 
+// Depth and evaluation size of a BSDF over its nested ones, refused past the bounds.
+Loader::BsdfTreeSize Loader::bsdfTreeOf(const Element& e, const std::vector<BsdfPtr>& nested) const {
   BsdfTreeSize tree;
   for (const BsdfPtr& child : nested) {
     auto it = bsdfTreeSizes_.find(child.get());
@@ -67,17 +58,14 @@ BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_
   if (tree.nodes > kMaxBsdfTreeNodes)
     e.fail("one evaluation of this BSDF would visit more than " + std::to_string(kMaxBsdfTreeNodes) +
            " nested BSDFs (<ref>s to BSDFs that hold <ref>s multiply)");
+  return tree;
+}
 
-  BsdfPtr bsdf;
-  if (!isKnownBsdfType(e.type)) {
-    unsupported(e.where() + ": unknown plugin '" + e.type + "'");
-    // Lenient mode: keep the scene renderable with Mitsuba's default material in its place.
-    bsdf = defaultBsdf();
-    registerId(e, Kind::Bsdf, bsdf);
-    return bsdf;
-  }
-  TexturePtr factor;
-  BsdfTextures perPoint;
+// Puts each textured parameter into e.props (its mean stands in) and sorts the textures into the
+// whole-BSDF factor (bsdf/textured.h) and those the BSDF evaluates per point (Bsdf::at).
+void Loader::applyBsdfTextures(const std::shared_ptr<XmlFile>& file, Element& e,
+                               const std::vector<std::pair<pugi::xml_node, TexturePtr>>& textures, TexturePtr& factor,
+                               BsdfTextures& perPoint) {
   for (const auto& [child, texture] : textures) {
     const std::string name = child.attribute("name").value();
     if (e.props.has(name) || (factor && isBsdfFactorParameter(e.type, name)))
@@ -108,6 +96,37 @@ BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_
     }
     e.props.set(name, p);
   }
+}
+
+BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
+  Element e = parseElement(file, node);
+  if (e.type.empty()) e.fail("missing attribute 'type'");
+  // A BSDF's data file (merl's measured table) is found like a mesh: relative to the scene file.
+  if (auto it = e.raw.find("filename");
+      it != e.raw.end() && !it->second.empty() && node.find_child_by_attribute("string", "name", "filename")) {
+    Property resolved;
+    resolved.type = Property::Type::String;
+    resolved.text = resolvePath(e, it->second);
+    resolved.line = e.props.lineOf("filename");
+    e.props.set("filename", resolved);
+  }
+  std::vector<BsdfPtr> nested;
+  std::vector<std::pair<pugi::xml_node, TexturePtr>> textures;
+  collectBsdfChildren(file, e, nested, textures);
+
+  const BsdfTreeSize tree = bsdfTreeOf(e, nested);
+
+  BsdfPtr bsdf;
+  if (!isKnownBsdfType(e.type)) {
+    unsupported(e.where() + ": unknown plugin '" + e.type + "'");
+    // Lenient mode: keep the scene renderable with Mitsuba's default material in its place.
+    bsdf = defaultBsdf();
+    registerId(e, Kind::Bsdf, bsdf);
+    return bsdf;
+  }
+  TexturePtr factor;
+  BsdfTextures perPoint;
+  applyBsdfTextures(file, e, textures, factor, perPoint);
   bsdf = e.located([&] { return createBsdf(e.props, nested, e.id, perPoint); });
   if (!bsdf) e.fail("the BSDF factory returned nothing");
   checkUnused(e);

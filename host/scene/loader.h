@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "bsdf/bsdf_textures.h"
 #include "scene/element.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
@@ -100,6 +101,13 @@ class Loader {
     uint64_t nodes = 1;
   };
   std::map<const Bsdf*, BsdfTreeSize> bsdfTreeSizes_;
+  // The steps of buildBsdf (bsdf_builder.cpp).
+  void collectBsdfChildren(const std::shared_ptr<XmlFile>& file, const Element& e, std::vector<BsdfPtr>& nested,
+                           std::vector<std::pair<pugi::xml_node, TexturePtr>>& textures);
+  BsdfTreeSize bsdfTreeOf(const Element& e, const std::vector<BsdfPtr>& nested) const;
+  void applyBsdfTextures(const std::shared_ptr<XmlFile>& file, Element& e,
+                         const std::vector<std::pair<pugi::xml_node, TexturePtr>>& textures, TexturePtr& factor,
+                         BsdfTextures& perPoint);
   std::map<std::string, int> anonymousCount_;
   int sensors_ = 0, integrators_ = 0, environments_ = 0;
   Scene scene_;
