@@ -16,6 +16,7 @@
 #include "geometry/face_normal.h"
 #include "geometry/ray_counter.h"
 #include "geometry/sphere_intersect.h"
+#include "geometry/user_geometry_hit.h"
 
 namespace rc {
 
@@ -54,16 +55,7 @@ void sphereIntersect(const RTCIntersectFunctionNArguments* args) {
     const Vec3 d(RTCRayN_dir_x(ray, N, i), RTCRayN_dir_y(ray, N, i), RTCRayN_dir_z(ray, N, i));
     float t;
     if (!intersectSphere(o, d, s.center, s.radius, RTCRayN_tnear(ray, N, i), RTCRayN_tfar(ray, N, i), t)) continue;
-    const Vec3 n = (o + t * d) - s.center;
-    RTCRayN_tfar(ray, N, i) = t;
-    RTCHitN_Ng_x(hit, N, i) = n.x;
-    RTCHitN_Ng_y(hit, N, i) = n.y;
-    RTCHitN_Ng_z(hit, N, i) = n.z;
-    RTCHitN_u(hit, N, i) = 0.0f;
-    RTCHitN_v(hit, N, i) = 0.0f;
-    RTCHitN_primID(hit, N, i) = args->primID;
-    RTCHitN_geomID(hit, N, i) = args->geomID;
-    RTCHitN_instID(hit, N, i, 0) = args->context->instID[0];
+    recordUserHit(args, ray, hit, i, t, (o + t * d) - s.center);
   }
 }
 

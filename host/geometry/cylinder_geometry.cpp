@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/user_geometry_hit.h"
+
 namespace rc {
 
 bool intersectCylinder(const Cylinder& c, const Vec3& o, const Vec3& d, float tMin, float tMax, float& t) {
@@ -94,15 +96,7 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
     if (args->valid[i] != -1) continue;
     float t;
     if (!hitOfLane(c, ray, N, i, t)) continue;
-    RTCRayN_tfar(ray, N, i) = t;
-    RTCHitN_Ng_x(hit, N, i) = 0.0f;  // the Hit is rebuilt from the point (cylinderHitGeometry)
-    RTCHitN_Ng_y(hit, N, i) = 0.0f;
-    RTCHitN_Ng_z(hit, N, i) = 1.0f;
-    RTCHitN_u(hit, N, i) = 0.0f;
-    RTCHitN_v(hit, N, i) = 0.0f;
-    RTCHitN_primID(hit, N, i) = args->primID;
-    RTCHitN_geomID(hit, N, i) = args->geomID;
-    RTCHitN_instID(hit, N, i, 0) = args->context->instID[0];
+    recordUserHit(args, ray, hit, i, t, Vec3(0.0f, 0.0f, 1.0f));  // the Hit is rebuilt from the point (cylinderHitGeometry)
   }
 }
 
