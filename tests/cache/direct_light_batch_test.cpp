@@ -12,13 +12,7 @@ namespace {
 TEST(DirectLightBatch, EachEstimatorMatchesItsScalarFunction) {
   const test::World w(test::cornellLike(16, 16));
   const RenderContext ctx = w.context();
-  const CameraModel camera(w.scene.camera, 16, 16);
-  std::vector<Hit> hits;
-  for (int y = 0; y < 16; ++y)
-    for (int x = 0; x < 16; ++x) {
-      const Hit h = w.accel->intersect(camera.generate(Vec2(x + 0.5f, y + 0.5f)));
-      if (h.valid() && h.bsdf >= 0) hits.push_back(h);
-    }
+  const std::vector<Hit> hits = w.pixelCentreHits(16);
   ASSERT_GT(hits.size(), 100u);
   DirectLightScratch scratch;
   for (DirectEstimator estimator : {DirectEstimator::LightOnly, DirectEstimator::LightStrategy, DirectEstimator::Full})

@@ -8,6 +8,7 @@
 #include "bsdf/bsdf_factory.h"
 #include "common/property_builders.h"
 #include "geometry/accel.h"
+#include "render/camera.h"
 #include "render/integrator.h"
 #include "render/light_sampler.h"
 #include "render/path_integrator.h"
@@ -136,6 +137,17 @@ struct World {
     lights = std::make_unique<LightSampler>(scene);
   }
   RenderContext context() const { return RenderContext{scene, *accel, *lights, {}, nullptr, {}}; }
+  // The surface hits (with a material) of the pixel centres of a size×size view of the world's camera.
+  std::vector<Hit> pixelCentreHits(int size) const {
+    const CameraModel camera(scene.camera, size, size);
+    std::vector<Hit> hits;
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        const Hit h = accel->intersect(camera.generate(Vec2(x + 0.5f, y + 0.5f)));
+        if (h.valid() && h.bsdf >= 0) hits.push_back(h);
+      }
+    return hits;
+  }
   // The path tracer's image of this world with the given options (spp, seed, sampler, adaptive…).
   Image renderPath(const RenderOptions& options, RenderStats* statsOut = nullptr) const {
     RenderContext ctx = context();
