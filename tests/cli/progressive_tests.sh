@@ -36,8 +36,10 @@ passes=$(stat_of "$TMP/path.json" passes)
 "$RC" "$DATA/tiny.xml" --integrator path --spp "$passes" --seed 5 --quiet -t 2 -o "$TMP/path_fixed.exr" \
   || fail path_passes_equal_spp "render --spp $passes failed"
 max_abs=$("$RC" diff "$TMP/path.exr" "$TMP/path_fixed.exr" --json | sed -n 's/.*"max_abs": \([-0-9.e+]*\).*/\1/p')
-# float rounding of double sums: a few ulps of values up to the emitter's 10
-if [ -n "$max_abs" ] && less "$max_abs" 0.00001; then pass path_passes_equal_spp
+# float rounding of the per-pass films, added pass by pass: it grows with the number of passes a
+# machine fits into the budget (3.1e-5 seen after 16,154 passes, values up to the emitter's 10);
+# 1e-4 is ≈ 80 float ulps of 10, while a wrong sample stream or weight differs by the noise (≫ 1e-3)
+if [ -n "$max_abs" ] && less "$max_abs" 0.0001; then pass path_passes_equal_spp
 else fail path_passes_equal_spp "max abs difference $max_abs after $passes passes"; fi
 
 # rcache: the same render within noise. Its passes share the fill and the sample streams of the
