@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/parallel_select.h"
+#include "core/parallel_sort.h"
 #include "core/rng.h"
 #include "core/timing.h"
 #include "render/direct_light.h"
@@ -349,12 +350,13 @@ std::vector<size_t> CacheEngine::pointsToRecheck(const std::vector<Lookup>& look
 std::vector<ShadePoint> CacheEngine::recordCandidates(PointView pts,
                                                       const std::vector<size_t>& uncovered, float sepPx) const {
   // Deterministic shuffle (by the points' seeds) so candidates spread over the batch; the keys
-  // are hashed once each, in parallel, not twice per comparison.
+  // are hashed once each, in parallel, not twice per comparison, and sorted in parallel (the
+  // point indices make every pair unique, so the order is std::sort's).
   std::vector<std::pair<uint64_t, size_t>> order(uncovered.size());
   parallelFor(order.size(), 4096, [&](size_t b, size_t e) {
     for (size_t j = b; j < e; ++j) order[j] = {hashMix(pts[uncovered[j]].seed, kSaltCandidateOrder), uncovered[j]};
   });
-  std::sort(order.begin(), order.end());
+  parallelSort(order);
   RecordOctree accepted(lo_, hi_);
   std::vector<ShadePoint> cands;
   for (const auto& keyed : order) {
