@@ -33,7 +33,7 @@ constexpr int kMaxBandRounds = 4;
 // Samples of one pixel on surfaces whose normals agree this closely share one cache lookup.
 constexpr float kSharedLookupMinCos = 0.995f;
 // Image rows per parallel task of the splat (any value gives the same image).
-constexpr int kSplatStripeRows = 4;
+constexpr int kSplatStripeRows = 8;
 
 // The RNG streams, film positions and camera rays of the samples of active pixels [jb, je), in
 // sample order; `first` is the offset of the chunk's first sample.
@@ -312,8 +312,9 @@ void FinalPass::splat(const Samples& s, const std::vector<Color>& repIndirect, c
     }
     return lo;
   };
-  // Rows a sample at most reaches from its pixel's row: the filter radius, and the jitter's pixel.
-  const int reach = static_cast<int>(std::ceil(film_.filter().radius())) + 2;
+  // Rows a sample at most reaches from its pixel's row: a position in [py, py + 1] reaches rows
+  // ceil(y − ½ − r) … floor(y − ½ + r).
+  const int reach = static_cast<int>(std::ceil(film_.filter().radius() + 0.5f));
   const int rowBegin = tile.splatRowBegin(), rowEnd = tile.splatRowEnd();
   const int stripes = (rowEnd - rowBegin + kSplatStripeRows - 1) / kSplatStripeRows;
   std::atomic<uint64_t> nan{0};
