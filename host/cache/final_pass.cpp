@@ -296,18 +296,26 @@ void FinalPass::splat(const Samples& s, const std::vector<Color>& repIndirect, c
                       const std::vector<size_t>& slot, TileFilm& tile) {
   const int W = run_.width;
   const size_t n = s.prim.size();
-  const ParallelArray<Color> radiance(n, [&](size_t i) {
+  // What the stripes read of each sample, compact: every stripe a sample's footprint reaches
+  // reads it again.
+  struct SplatSample {
+    Vec2 filmPos;
+    Color L;
+    int pixel, sampleIndex;
+  };
+  const ParallelArray<SplatSample> samples(n, [&](size_t i) {
     const ShadePoint& sp = s.prim[i].sp;
     const Bsdf* bsdf = sp.active ? run_.ctx.scene.bsdfs[sp.hit.bsdf].get() : nullptr;
     const Color tint = bsdf && bsdf->tinted() ? bsdf->tint(sp.hit.uv, sp.wo) : Color(1.0f);  // Bsdf::tint
-    return s.prim[i].Le + tint * (s.direct[i] + repIndirect[slot[s.rep[i]]]);
+    return SplatSample{s.prim[i].filmPos, s.prim[i].Le + tint * (s.direct[i] + repIndirect[slot[s.rep[i]]]), sp.pixel,
+                       s.sampleIndex[i]};
   });
   // Samples are in pixel order, so those of rows [ya, yb) are one index range.
   auto firstOfRow = [&](int y) {
     size_t lo = 0, hi = n;
     while (lo < hi) {
       const size_t mid = (lo + hi) / 2;
-      if (s.prim[mid].sp.pixel / W < y) lo = mid + 1;
+      if (samples[mid].pixel / W < y) lo = mid + 1;
       else hi = mid;
     }
     return lo;
@@ -324,13 +332,12 @@ void FinalPass::splat(const Samples& s, const std::vector<Color>& repIndirect, c
       const int yb = std::min(rowEnd, ya + kSplatStripeRows);
       uint64_t stripeNan = 0;
       for (size_t i = firstOfRow(ya - reach), end = firstOfRow(yb + reach); i < end; ++i) {
-        const ShadePoint& sp = s.prim[i].sp;
-        const int py = sp.pixel / W;
+        const SplatSample& smp = samples[i];
+        const int py = smp.pixel / W;
         const bool own = py >= ya && py < yb;
-        const Color& L = radiance[i];
-        if (isFinite(L)) {
-          tile.splatRows(s.prim[i].filmPos, L, ya, yb);
-          if (own) adaptive_.add(static_cast<size_t>(sp.pixel), s.sampleIndex[i], L);
+        if (isFinite(smp.L)) {
+          tile.splatRows(smp.filmPos, smp.L, ya, yb);
+          if (own) adaptive_.add(static_cast<size_t>(smp.pixel), smp.sampleIndex, smp.L);
         } else if (own) {
           ++stripeNan;
         }
