@@ -1,7 +1,6 @@
 #include "cache/cache_engine.h"
 
 #include <algorithm>
-#include <deque>
 #include <cmath>
 
 #include "cache/direct_light_batch.h"
@@ -167,16 +166,9 @@ RadianceCache& CacheEngine::cacheFor(const CacheKey& key) {
 void CacheEngine::radianceOut(PointView pts, std::vector<Color>& out, float relaxedScale) {
   out.assign(pts.size(), Color(0.0f));
   parallelFor(pts.size(), 256, [&](size_t b, size_t e) {
-    // Per thread, reused: the chunk's estimators, their shadow and BSDF rays traced as packets.
-    thread_local std::vector<DirectLightJob> jobs;
-    thread_local std::vector<uint32_t> jobPoint;
-    thread_local std::vector<Color> L;
-    thread_local DirectLightScratch scratch;
-    // The jobs point at these; a deque keeps them in place as it grows.
-    thread_local std::deque<BsdfPtr> holders;
-    jobs.clear();
-    jobPoint.clear();
-    holders.clear();
+    // The chunk's estimators, their shadow and BSDF rays traced as packets.
+    thread_local DirectLightChunk batch;
+    batch.clear();
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& sp = pts[i];
       if (!sp.active) continue;
@@ -187,20 +179,19 @@ void CacheEngine::radianceOut(PointView pts, std::vector<Color>& out, float rela
       // its light sample from the record's low-discrepancy sequence (buildRecords), unless its
       // path continues: continuePaths starts that point's sequence afresh for the BSDF sample.
       const bool continues = continuesPath(sp);
-      BsdfPtr& pointBsdf = holders.emplace_back();  // a spatially varying BSDF at this point (Bsdf::at)
+      BsdfPtr& pointBsdf = batch.holders.emplace_back();  // a spatially varying BSDF at this point (Bsdf::at)
       const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf);
-      jobs.push_back({&directLightContext(sp), &sp.hit, sp.frame, sp.wo, &bsdf,
+      batch.jobs.push_back({&directLightContext(sp), &sp.hit, sp.frame, sp.wo, &bsdf,
                       continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1),
                       continues               ? DirectEstimator::LightStrategy
                       : bsdf.isDiffuseOnly() ? DirectEstimator::LightOnly
                                              : DirectEstimator::Full,
                       continues ? sp.lightSamples : 1});
-      jobPoint.push_back(static_cast<uint32_t>(i));
+      batch.owner.push_back(static_cast<uint32_t>(i));
     }
-    L.resize(jobs.size());
-    directLightBatch(jobs, L.data(), scratch);
-    for (size_t k = 0; k < jobs.size(); ++k)
-      if (isFinite(L[k])) out[jobPoint[k]] = L[k];
+    batch.run();
+    for (size_t k = 0; k < batch.jobs.size(); ++k)
+      if (isFinite(batch.L[k])) out[batch.owner[k]] = batch.L[k];
   });
   std::vector<Color> ind;
   indirect(pts, ind, nullptr, relaxedScale);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 
 #include "cache/direct_light_batch.h"
 #include "cache/final_pass_memory.h"
@@ -221,16 +220,9 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
     std::vector<Vec2> filmPos(count);
     generateCameraRays(run_, film_, y0, ranges, offset, active, jb, je, first, rngs, rays, filmPos);
     run_.ctx.accel.intersect(rays.data(), hits.data(), count, true);
-    // The chunk's direct light as one batch (shadow and BSDF rays as packets, direct_light_batch.h):
-    // per thread, reused; the jobs point at the BSDFs held here.
-    thread_local std::vector<DirectLightJob> jobs;
-    thread_local std::vector<uint32_t> jobSample;
-    thread_local std::vector<Color> direct;
-    thread_local DirectLightScratch scratch;
-    thread_local std::deque<BsdfPtr> holders;
-    jobs.clear();
-    jobSample.clear();
-    holders.clear();
+    // The chunk's direct light as one batch (shadow and BSDF rays as packets).
+    thread_local DirectLightChunk batch;
+    batch.clear();
     for (size_t j = jb; j < je; ++j) {
       const size_t q = active[j];
       const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
@@ -242,7 +234,7 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
         s.prim[i] = run_.primaries.of(filmPos[k], y * W + x, sampleSeed, rays[k], hits[k]);
         ShadePoint& sp = s.prim[i].sp;
         if (!sp.active || !withinMaxDepth(maxDepth, 2)) continue;
-        BsdfPtr& pointBsdf = holders.emplace_back();  // a spatially varying BSDF at this point (Bsdf::at)
+        BsdfPtr& pointBsdf = batch.holders.emplace_back();  // a spatially varying BSDF at this point (Bsdf::at)
         const Bsdf& bsdf = bsdfAt(*run_.ctx.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf);
         sp.lightSamples = params.lightSamples;
         // Importance-sampled points: the continuation's ray doubles as the BSDF sample
@@ -251,19 +243,18 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
         const bool continues = run_.engine.continuesPath(sp);
         const bool lightOnly = !continues && cheapestIsLightOnly(lights, sp.hit, bsdf, params.lightSamples);
         if (lightOnly) ++lightOnlyCount;
-        jobs.push_back({&lights, &sp.hit, sp.frame, sp.wo, &bsdf, rngs[k],
+        batch.jobs.push_back({&lights, &sp.hit, sp.frame, sp.wo, &bsdf, rngs[k],
                         continues   ? DirectEstimator::LightStrategy
                         : lightOnly ? DirectEstimator::LightOnly
                                     : DirectEstimator::Full,
                         params.lightSamples});
-        jobSample.push_back(static_cast<uint32_t>(k));
+        batch.owner.push_back(static_cast<uint32_t>(k));
       }
     }
-    direct.resize(jobs.size());
-    directLightBatch(jobs, direct.data(), scratch);
-    for (size_t m = 0; m < jobs.size(); ++m) {
-      rngs[jobSample[m]] = jobs[m].rng;  // the stream goes on where the estimator left it
-      s.direct[first + jobSample[m]] = direct[m];
+    batch.run();
+    for (size_t m = 0; m < batch.jobs.size(); ++m) {
+      rngs[batch.owner[m]] = batch.jobs[m].rng;  // the stream goes on where the estimator left it
+      s.direct[first + batch.owner[m]] = batch.L[m];
     }
     for (size_t j = jb; j < je; ++j) {
       const size_t q = active[j];
