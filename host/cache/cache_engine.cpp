@@ -1,7 +1,6 @@
 #include "cache/cache_engine.h"
 
 #include <algorithm>
-#include <deque>
 #include <cmath>
 
 #include "cache/direct_light_batch.h"
@@ -13,6 +12,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/parallel_select.h"
+#include "core/parallel_sort.h"
 #include "core/rng.h"
 #include "core/timing.h"
 #include "render/direct_light.h"
@@ -166,16 +166,9 @@ RadianceCache& CacheEngine::cacheFor(const CacheKey& key) {
 void CacheEngine::radianceOut(PointView pts, std::vector<Color>& out, float relaxedScale) {
   out.assign(pts.size(), Color(0.0f));
   parallelFor(pts.size(), 256, [&](size_t b, size_t e) {
-    // Per thread, reused: the chunk's estimators, their shadow and BSDF rays traced as packets.
-    thread_local std::vector<DirectLightJob> jobs;
-    thread_local std::vector<uint32_t> jobPoint;
-    thread_local std::vector<Color> L;
-    thread_local DirectLightScratch scratch;
-    // The jobs point at these; a deque keeps them in place as it grows.
-    thread_local std::deque<BsdfPtr> holders;
-    jobs.clear();
-    jobPoint.clear();
-    holders.clear();
+    // The chunk's estimators, their shadow and BSDF rays traced as packets.
+    thread_local DirectLightChunk batch;
+    batch.clear();
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& sp = pts[i];
       if (!sp.active) continue;
@@ -186,20 +179,19 @@ void CacheEngine::radianceOut(PointView pts, std::vector<Color>& out, float rela
       // its light sample from the record's low-discrepancy sequence (buildRecords), unless its
       // path continues: continuePaths starts that point's sequence afresh for the BSDF sample.
       const bool continues = continuesPath(sp);
-      BsdfPtr& pointBsdf = holders.emplace_back();  // a spatially varying BSDF at this point (Bsdf::at)
+      BsdfPtr& pointBsdf = batch.holders.emplace_back();  // a spatially varying BSDF at this point (Bsdf::at)
       const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf);
-      jobs.push_back({&directLightContext(sp), &sp.hit, sp.frame, sp.wo, &bsdf,
+      batch.jobs.push_back({&directLightContext(sp), &sp.hit, sp.frame, sp.wo, &bsdf,
                       continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1),
                       continues               ? DirectEstimator::LightStrategy
                       : bsdf.isDiffuseOnly() ? DirectEstimator::LightOnly
                                              : DirectEstimator::Full,
                       continues ? sp.lightSamples : 1});
-      jobPoint.push_back(static_cast<uint32_t>(i));
+      batch.owner.push_back(static_cast<uint32_t>(i));
     }
-    L.resize(jobs.size());
-    directLightBatch(jobs, L.data(), scratch);
-    for (size_t k = 0; k < jobs.size(); ++k)
-      if (isFinite(L[k])) out[jobPoint[k]] = L[k];
+    batch.run();
+    for (size_t k = 0; k < batch.jobs.size(); ++k)
+      if (isFinite(batch.L[k])) out[batch.owner[k]] = batch.L[k];
   });
   std::vector<Color> ind;
   indirect(pts, ind, nullptr, relaxedScale);
@@ -349,12 +341,13 @@ std::vector<size_t> CacheEngine::pointsToRecheck(const std::vector<Lookup>& look
 std::vector<ShadePoint> CacheEngine::recordCandidates(PointView pts,
                                                       const std::vector<size_t>& uncovered, float sepPx) const {
   // Deterministic shuffle (by the points' seeds) so candidates spread over the batch; the keys
-  // are hashed once each, in parallel, not twice per comparison.
+  // are hashed once each, in parallel, not twice per comparison, and sorted in parallel (the
+  // point indices make every pair unique, so the order is std::sort's).
   std::vector<std::pair<uint64_t, size_t>> order(uncovered.size());
   parallelFor(order.size(), 4096, [&](size_t b, size_t e) {
     for (size_t j = b; j < e; ++j) order[j] = {hashMix(pts[uncovered[j]].seed, kSaltCandidateOrder), uncovered[j]};
   });
-  std::sort(order.begin(), order.end());
+  parallelSort(order);
   RecordOctree accepted(lo_, hi_);
   std::vector<ShadePoint> cands;
   for (const auto& keyed : order) {

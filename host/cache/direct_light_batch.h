@@ -5,6 +5,7 @@
 // scalar function's, bit for bit, whenever the batched queries answer as the single-ray ones
 // (same draws from the point's RNG, same additions in the same order).
 #include <cstdint>
+#include <deque>
 #include <vector>
 
 #include "render/direct_light.h"
@@ -41,5 +42,27 @@ struct DirectLightScratch {
 
 // out[i] = the direct light of jobs[i] (the RNGs advance as the scalar functions' would).
 void directLightBatch(std::vector<DirectLightJob>& jobs, Color* out, DirectLightScratch& scratch);
+
+// One parallel task's batch: its jobs, the caller's index of each, the BSDFs the jobs point at
+// (spatially varying ones made per point, Bsdf::at; a deque keeps them in place as it grows) and
+// the results. Kept per thread and reused, so a batch allocates nothing once sized.
+struct DirectLightChunk {
+  std::vector<DirectLightJob> jobs;
+  std::vector<uint32_t> owner;
+  std::deque<BsdfPtr> holders;
+  std::vector<Color> L;
+  DirectLightScratch scratch;
+
+  void clear() {
+    jobs.clear();
+    owner.clear();
+    holders.clear();
+  }
+  // L[k] = the direct light of jobs[k].
+  void run() {
+    L.resize(jobs.size());
+    directLightBatch(jobs, L.data(), scratch);
+  }
+};
 
 }  // namespace rc

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cache/direct_light_batch.h"
 #include "cache/final_pass_memory.h"
 #include "cache/rng_salts.h"
 #include "core/error.h"
@@ -30,6 +31,8 @@ constexpr float kFinalRelaxedScale = 2.0f;
 constexpr int kMaxBandRounds = 4;
 // Samples of one pixel on surfaces whose normals agree this closely share one cache lookup.
 constexpr float kSharedLookupMinCos = 0.995f;
+// Image rows per parallel task of the splat (any value gives the same image).
+constexpr int kSplatStripeRows = 8;
 
 // The RNG streams, film positions and camera rays of the samples of active pixels [jb, je), in
 // sample order; `first` is the offset of the chunk's first sample.
@@ -217,33 +220,50 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
     std::vector<Vec2> filmPos(count);
     generateCameraRays(run_, film_, y0, ranges, offset, active, jb, je, first, rngs, rays, filmPos);
     run_.ctx.accel.intersect(rays.data(), hits.data(), count, true);
+    // The chunk's direct light as one batch (shadow and BSDF rays as packets).
+    thread_local DirectLightChunk batch;
+    batch.clear();
     for (size_t j = jb; j < je; ++j) {
       const size_t q = active[j];
       const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
-      pixelReps.clear();
-      repShares.clear();
       for (int si = ranges[q].first; si < ranges[q].end; ++si) {
         const size_t i = offset[q] + (si - ranges[q].first), k = i - first;
         s.sampleIndex[i] = si;
-        Rng& rng = rngs[k];
         const uint64_t sensorPixel = static_cast<uint64_t>(film_.cropY() + y) * film_.sensorWidth() + film_.cropX() + x;
         const uint64_t sampleSeed = hashMix(run_.seed, sensorPixel, kSaltFinalSample + si);
         s.prim[i] = run_.primaries.of(filmPos[k], y * W + x, sampleSeed, rays[k], hits[k]);
         ShadePoint& sp = s.prim[i].sp;
-        if (sp.active && withinMaxDepth(maxDepth, 2)) {
-          BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
-          const Bsdf& bsdf = bsdfAt(*run_.ctx.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf);
-          sp.lightSamples = params.lightSamples;
-          bool lightOnly = false;
-          // Importance-sampled points: the continuation's ray doubles as the BSDF sample.
-          const RenderContext& lights = run_.engine.directLightContext(sp);
-          s.direct[i] = run_.engine.continuesPath(sp)
-                            ? lightStrategyMis(lights, sp.hit, sp.frame, sp.wo, bsdf, rng, params.lightSamples)
-                            : directLightCheapest(lights, sp.hit, sp.frame, sp.wo, bsdf, rng, params.lightSamples,
-                                                  &lightOnly);
-          if (lightOnly) ++lightOnlyCount;
-        }
-        continueLowDiscrepancy(sp, rng);
+        if (!sp.active || !withinMaxDepth(maxDepth, 2)) continue;
+        BsdfPtr& pointBsdf = batch.holders.emplace_back();  // a spatially varying BSDF at this point (Bsdf::at)
+        const Bsdf& bsdf = bsdfAt(*run_.ctx.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf);
+        sp.lightSamples = params.lightSamples;
+        // Importance-sampled points: the continuation's ray doubles as the BSDF sample
+        // (lightStrategyMis); the others take directLightCheapest's estimator.
+        const RenderContext& lights = run_.engine.directLightContext(sp);
+        const bool continues = run_.engine.continuesPath(sp);
+        const bool lightOnly = !continues && cheapestIsLightOnly(lights, sp.hit, bsdf, params.lightSamples);
+        if (lightOnly) ++lightOnlyCount;
+        batch.jobs.push_back({&lights, &sp.hit, sp.frame, sp.wo, &bsdf, rngs[k],
+                        continues   ? DirectEstimator::LightStrategy
+                        : lightOnly ? DirectEstimator::LightOnly
+                                    : DirectEstimator::Full,
+                        params.lightSamples});
+        batch.owner.push_back(static_cast<uint32_t>(k));
+      }
+    }
+    batch.run();
+    for (size_t m = 0; m < batch.jobs.size(); ++m) {
+      rngs[batch.owner[m]] = batch.jobs[m].rng;  // the stream goes on where the estimator left it
+      s.direct[first + batch.owner[m]] = batch.L[m];
+    }
+    for (size_t j = jb; j < je; ++j) {
+      const size_t q = active[j];
+      pixelReps.clear();
+      repShares.clear();
+      for (int si = ranges[q].first; si < ranges[q].end; ++si) {
+        const size_t i = offset[q] + (si - ranges[q].first);
+        ShadePoint& sp = s.prim[i].sp;
+        continueLowDiscrepancy(sp, rngs[i - first]);
         s.rep[i] = static_cast<uint32_t>(i);
         const bool cached = sp.active && isCached(run_.engine.technique(sp));
         if (params.sharePixel && cached)
@@ -258,22 +278,70 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
   });
 }
 
+// The samples' radiance is splatted by stripes of the tile's rows in parallel: each stripe passes
+// the samples that can reach it in sample order and adds only to its own rows, so every pixel sums
+// the same terms in the same order as one serial pass (the image does not depend on threads).
+// A sample's per-pixel records (adaptive sampling, the NaN count) go with the stripe holding its
+// pixel; the AOVs, rarely asked for, keep one serial pass.
 void FinalPass::splat(const Samples& s, const std::vector<Color>& repIndirect, const std::vector<LookupAov>& repAov,
                       const std::vector<size_t>& slot, TileFilm& tile) {
   const int W = run_.width;
-  for (size_t i = 0; i < s.prim.size(); ++i) {
+  const size_t n = s.prim.size();
+  // What the stripes read of each sample, compact: every stripe a sample's footprint reaches
+  // reads it again.
+  struct SplatSample {
+    Vec2 filmPos;
+    Color L;
+    int pixel, sampleIndex;
+  };
+  const ParallelArray<SplatSample> samples(n, [&](size_t i) {
     const ShadePoint& sp = s.prim[i].sp;
-    const LookupAov& la = repAov[slot[s.rep[i]]];
     const Bsdf* bsdf = sp.active ? run_.ctx.scene.bsdfs[sp.hit.bsdf].get() : nullptr;
     const Color tint = bsdf && bsdf->tinted() ? bsdf->tint(sp.hit.uv, sp.wo) : Color(1.0f);  // Bsdf::tint
-    const Color L = s.prim[i].Le + tint * (s.direct[i] + repIndirect[slot[s.rep[i]]]);
-    const int px = sp.pixel % W, py = sp.pixel / W;
-    if (isFinite(L)) {
-      tile.splat(s.prim[i].filmPos, L);
-      adaptive_.add(static_cast<size_t>(sp.pixel), s.sampleIndex[i], L);
-    } else {
-      ++nanSamples_;
+    return SplatSample{s.prim[i].filmPos, s.prim[i].Le + tint * (s.direct[i] + repIndirect[slot[s.rep[i]]]), sp.pixel,
+                       s.sampleIndex[i]};
+  });
+  // Samples are in pixel order, so those of rows [ya, yb) are one index range.
+  auto firstOfRow = [&](int y) {
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+      const size_t mid = (lo + hi) / 2;
+      if (samples[mid].pixel / W < y) lo = mid + 1;
+      else hi = mid;
     }
+    return lo;
+  };
+  // Rows a sample at most reaches from its pixel's row: a position in [py, py + 1] reaches rows
+  // ceil(y − ½ − r) … floor(y − ½ + r).
+  const int reach = static_cast<int>(std::ceil(film_.filter().radius() + 0.5f));
+  const int rowBegin = tile.splatRowBegin(), rowEnd = tile.splatRowEnd();
+  const int stripes = (rowEnd - rowBegin + kSplatStripeRows - 1) / kSplatStripeRows;
+  std::atomic<uint64_t> nan{0};
+  parallelFor(static_cast<size_t>(std::max(0, stripes)), 1, [&](size_t b, size_t e) {
+    for (size_t stripe = b; stripe < e; ++stripe) {
+      const int ya = rowBegin + static_cast<int>(stripe) * kSplatStripeRows;
+      const int yb = std::min(rowEnd, ya + kSplatStripeRows);
+      uint64_t stripeNan = 0;
+      for (size_t i = firstOfRow(ya - reach), end = firstOfRow(yb + reach); i < end; ++i) {
+        const SplatSample& smp = samples[i];
+        const int py = smp.pixel / W;
+        const bool own = py >= ya && py < yb;
+        if (isFinite(smp.L)) {
+          tile.splatRows(smp.filmPos, smp.L, ya, yb);
+          if (own) adaptive_.add(static_cast<size_t>(smp.pixel), smp.sampleIndex, smp.L);
+        } else if (own) {
+          ++stripeNan;
+        }
+      }
+      nan += stripeNan;
+    }
+  });
+  nanSamples_ += nan.load();
+  if (!aovs_.radius && !aovs_.contributors && !aovs_.technique) return;
+  for (size_t i = 0; i < n; ++i) {
+    const ShadePoint& sp = s.prim[i].sp;
+    const LookupAov& la = repAov[slot[s.rep[i]]];
+    const int px = sp.pixel % W, py = sp.pixel / W;
     if (aovs_.radius) tile.addAov("radius", px, py, Color(la.meanA, la.meanRadiusPx, 0.0f));
     if (aovs_.contributors) tile.addAov("contributors", px, py, Color(float(la.contributors)));
     if (aovs_.technique) {

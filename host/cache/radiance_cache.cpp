@@ -35,29 +35,26 @@ uint32_t RadianceCache::insert(std::vector<RecordInfo> infos, const std::vector<
     throw Error("RadianceCache::insert: mixing world-frame and record-frame records");
   hasWorld_ = world;
   const uint32_t first = static_cast<uint32_t>(infos_.size());
-  // Neighbour candidates among the records already present, for all new records at once on all
-  // threads (the octree does not change until the serial pass below); candidates among the new
-  // records themselves are added in that pass. A superset of the neighbours either way: the
-  // exact test (isNeighbour) decides.
+  // Neighbour candidates for all new records at once on all threads, before the serial pass
+  // below changes anything: the records already present (the octree), and the new records
+  // before each one within their unclamped reach (radii only shrink, so the reach at insertion is
+  // within it). A superset of the neighbours either way: the exact test (isNeighbour) decides.
   std::vector<std::vector<uint32_t>> candidates(n);
-  std::vector<float> insertedReach;  // a·R of the new records as inserted into the octree
-  insertedReach.reserve(n);
   if (clampNeighbours)
     parallelFor(n, 8, [&](size_t b, size_t e) {
-      for (size_t i = b; i < e; ++i)
-        octree_.querySphere(infos[i].p, infos[i].a * infos[i].R, [&](uint32_t id) { candidates[i].push_back(id); });
+      for (size_t i = b; i < e; ++i) {
+        const float reach = infos[i].a * infos[i].R;
+        octree_.querySphere(infos[i].p, reach, [&](uint32_t id) { candidates[i].push_back(id); });
+        for (size_t j = 0; j < i; ++j)
+          if (glm::length(infos[j].p - infos[i].p) <= infos[j].a * infos[j].R + reach)
+            candidates[i].push_back(first + static_cast<uint32_t>(j));
+      }
     });
   for (size_t i = 0; i < n; ++i) {
     RecordInfo& r = infos[i];
     // Neighbour clamping against every record whose influence sphere overlaps the new one's
     // and that faces the same way (records on the other side of a thin wall are not neighbours).
-    const float reach = r.a * r.R;
     std::vector<uint32_t>& neighbours = candidates[i];
-    // New records inserted before this one, within their reach at insertion (radii only shrink
-    // afterwards, so this holds every neighbour among them).
-    if (clampNeighbours)
-      for (uint32_t id = first; id < infos_.size(); ++id)
-        if (glm::length(infos_[id].p - r.p) <= insertedReach[id - first] + reach) neighbours.push_back(id);
     // The order of ARCHITECTURE.md §Conventions: the new radius against all neighbours first, then each neighbour against
     // the final new radius, so the result does not depend on the order neighbours are found in.
     std::sort(neighbours.begin(), neighbours.end());
@@ -87,7 +84,6 @@ uint32_t RadianceCache::insert(std::vector<RecordInfo> infos, const std::vector<
     spheres_.push_back(influenceSphere(r));
     if (std::isfinite(r.a * r.R)) maxReach_ = std::max(maxReach_, r.a * r.R);
     octree_.insert(id, r.p, r.a * r.R);
-    insertedReach.push_back(r.a * r.R);
   }
   lambda_.insert(lambda_.end(), lambda.begin(), lambda.end());
   gradT_.insert(gradT_.end(), gradT.begin(), gradT.end());

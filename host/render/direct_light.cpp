@@ -65,10 +65,13 @@ Color directLightLightOnly(const RenderContext& ctx, const Hit& hit, const Frame
   return lightSampleContribution(ctx, hit, frame, woLocal, bsdf, rng, 0);
 }
 
+bool cheapestIsLightOnly(const RenderContext& ctx, const Hit& hit, const Bsdf& bsdf, int lightSamples) {
+  return lightSamples == 1 && bsdf.isDiffuseOnly() && ctx.lights.solidAngleBound(hit.p) <= kSmallLightsSolidAngle;
+}
+
 Color directLightCheapest(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
                           const Bsdf& bsdf, Rng& rng, int lightSamples, bool* lightOnly) {
-  const bool small = lightSamples == 1 && bsdf.isDiffuseOnly() &&
-                     ctx.lights.solidAngleBound(hit.p) <= kSmallLightsSolidAngle;
+  const bool small = cheapestIsLightOnly(ctx, hit, bsdf, lightSamples);
   if (lightOnly) *lightOnly = small;
   return small ? directLightLightOnly(ctx, hit, frame, woLocal, bsdf, rng)
                : directLight(ctx, hit, frame, woLocal, bsdf, rng, lightSamples);

@@ -109,6 +109,8 @@ constexpr float kSmallLightsSolidAngle = 0.5f;
 // unbiased. *lightOnly (optional) reports the choice.
 Color directLightCheapest(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
                           const Bsdf& bsdf, Rng& rng, int lightSamples, bool* lightOnly = nullptr);
+// directLightCheapest's choice: true where it takes light sampling alone.
+bool cheapestIsLightOnly(const RenderContext& ctx, const Hit& hit, const Bsdf& bsdf, int lightSamples);
 
 // Shadow ray from a surface hit toward a light sample.
 Ray shadowRay(const Hit& hit, const struct LightSample& ls);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 
@@ -37,19 +38,22 @@ float ReconstructionFilter::eval(float x) const {
 
 namespace {
 
-// Calls add(ix, iy, weight) for every image pixel the sample at filmPos reaches.
+// Calls add(ix, iy, weight) for every image pixel the sample at filmPos reaches (only those in
+// rows [rowBegin, rowEnd) where given).
 template <typename Add>
-void forEachFootprint(const ReconstructionFilter& f, Vec2 pos, int w, int h, Add&& add) {
+void forEachFootprint(const ReconstructionFilter& f, Vec2 pos, int w, int h, Add&& add, int rowBegin = 0,
+                      int rowEnd = std::numeric_limits<int>::max()) {
   if (f.isBox()) {
     const int ix = static_cast<int>(std::floor(pos.x)), iy = static_cast<int>(std::floor(pos.y));
-    if (ix >= 0 && iy >= 0 && ix < w && iy < h) add(ix, iy, 1.0f);
+    if (ix >= 0 && iy >= std::max(0, rowBegin) && ix < w && iy < std::min(h, rowEnd)) add(ix, iy, 1.0f);
     return;
   }
   const float r = f.radius();
   const int xa = std::max(0, static_cast<int>(std::ceil(pos.x - 0.5f - r)));
   const int xb = std::min(w - 1, static_cast<int>(std::floor(pos.x - 0.5f + r)));
-  const int ya = std::max(0, static_cast<int>(std::ceil(pos.y - 0.5f - r)));
-  const int yb = std::min(h - 1, static_cast<int>(std::floor(pos.y - 0.5f + r)));
+  const int ya = std::max(std::max(0, rowBegin), static_cast<int>(std::ceil(pos.y - 0.5f - r)));
+  const int yb = std::min(std::min(h, rowEnd) - 1, static_cast<int>(std::floor(pos.y - 0.5f + r)));
+  if (ya > yb) return;
   float wx[160];  // radius ≤ 64 (stddev ≤ 16) → at most 129 pixels
   const int nx = std::min(160, xb - xa + 1);
   for (int i = 0; i < nx; ++i) wx[i] = f.eval(static_cast<float>(xa + i) + 0.5f - pos.x);
@@ -73,7 +77,9 @@ TileFilm::TileFilm(const ReconstructionFilter& filter, int imageWidth, int image
   sum_.assign(static_cast<size_t>(bw_) * bh_ * 4, 0.0);
 }
 
-void TileFilm::splat(Vec2 pos, const Color& L) {
+void TileFilm::splat(Vec2 pos, const Color& L) { splatRows(pos, L, by0_, by0_ + bh_); }
+
+void TileFilm::splatRows(Vec2 pos, const Color& L, int rowBegin, int rowEnd) {
   forEachFootprint(*filter_, pos, imageW_, imageH_, [&](int ix, int iy, float w) {
     const int lx = ix - bx0_, ly = iy - by0_;
     if (lx < 0 || ly < 0 || lx >= bw_ || ly >= bh_) return;  // only for samples outside the tile
@@ -82,7 +88,7 @@ void TileFilm::splat(Vec2 pos, const Color& L) {
     s[1] += static_cast<double>(w) * L.g;
     s[2] += static_cast<double>(w) * L.b;
     s[3] += w;
-  });
+  }, rowBegin, rowEnd);
 }
 
 void TileFilm::addAov(const std::string& name, int px, int py, const Color& value) {

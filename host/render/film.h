@@ -36,6 +36,12 @@ class TileFilm {
   TileFilm(const ReconstructionFilter& filter, int imageWidth, int imageHeight, int x0, int y0, int x1, int y1);
   // filmPos in pixels of the full image ((0,0) top-left corner). Non-finite L must be filtered by the caller.
   void splat(Vec2 filmPos, const Color& L);
+  // The part of splat(filmPos, L) that falls on image rows [rowBegin, rowEnd): threads that each
+  // own some rows and pass every sample in the same order add exactly what one serial pass adds.
+  void splatRows(Vec2 filmPos, const Color& L, int rowBegin, int rowEnd);
+  // The image rows a splat into this tile can reach (the tile's rows and their filter border).
+  int splatRowBegin() const { return by0_; }
+  int splatRowEnd() const { return by0_ + bh_; }
   // Per-pixel AOV value (box average over the pixel's samples, no filtering): pixel (px, py) inside the tile.
   void addAov(const std::string& name, int px, int py, const Color& value);
 

@@ -13,6 +13,7 @@
 #include "core/image_metrics.h"
 #include "core/math.h"
 #include "core/parallel.h"
+#include "core/parallel_sort.h"
 #include "core/properties.h"
 #include "core/rng.h"
 
@@ -143,6 +144,27 @@ TEST(Parallel, CoversRangeOnceAndRethrows) {
                  if (b == 50) throw Error("boom");
                }),
                Error);
+  setThreadCount(0);
+}
+
+TEST(Parallel, SortEqualsStdSortForAnyThreadCount) {
+  // Several runs and an odd last one, so the merge rounds pair uneven runs; duplicate keys with
+  // unique second members, as the record candidates' (hash, index) pairs.
+  const size_t n = 5 * kSortRun + 123;
+  std::vector<std::pair<uint64_t, size_t>> base(n);
+  Rng rng(11, 3);
+  for (size_t i = 0; i < n; ++i) base[i] = {static_cast<uint64_t>(rng.nextFloat() * 1000.0f), i};
+  std::vector<std::pair<uint64_t, size_t>> expected = base;
+  std::sort(expected.begin(), expected.end());
+  for (int threads : {1, 2, 3}) {
+    setThreadCount(threads);
+    std::vector<std::pair<uint64_t, size_t>> v = base;
+    parallelSort(v);
+    EXPECT_EQ(v, expected) << threads << " threads";
+  }
+  std::vector<int> small = {3, 1, 2};
+  parallelSort(small);
+  EXPECT_EQ(small, (std::vector<int>{1, 2, 3}));
   setThreadCount(0);
 }
 
