@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/shading_frame.h"
 #include "cache/final_pass_memory.h"
 #include "cache/rng_salts.h"
 #include "core/error.h"
@@ -232,7 +233,7 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
         ShadePoint& sp = s.prim[i].sp;
         if (sp.active && withinMaxDepth(maxDepth, 2)) {
           BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
-          const Bsdf& bsdf = bsdfAt(*run_.ctx.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf);
+          const Bsdf& bsdf = bsdfAt(*run_.ctx.scene.bsdfs[sp.hit.bsdf], sp.hit, sp.frame, pointBsdf);
           sp.lightSamples = params.lightSamples;
           bool lightOnly = false;
           // Importance-sampled points: the continuation's ray doubles as the BSDF sample.
