@@ -46,14 +46,22 @@ TEST(AlphaTables, PointChoiceInterpolatesInLogAlpha) {
   EXPECT_EQ(plan.tableAt(0.3f, 0.01f), 5);
 }
 
-Scene roughTexturedBox(int size) {
-  Scene s = boxScene(0.0f, size, size);
+Properties floorProps(float alpha) {
   Properties props;
   props.pluginType = "roughconductor";
   props.set("distribution", stringProp("ggx"));
-  props.set("alpha", floatProp(0.2));
+  props.set("alpha", floatProp(alpha));
   props.set("material", stringProp("none"));
   props.set("specular_reflectance", rgbProp(0.8f, 0.8f, 0.8f));
+  return props;
+}
+
+BsdfPtr glossyAt(float alpha) { return createBsdf(floorProps(alpha), {}, "floor"); }
+
+// The floor's α a 4×4 checkerboard of 0.3 and 0.6 (the parameter itself holds the mean, as the loader sets it).
+Scene roughTexturedBox(int size) {
+  Scene s = boxScene(0.0f, size, size);
+  const Properties props = floorProps(0.45f);
   UvTransform toUv;
   toUv.m = Mat3(4.0f);
   toUv.m[2][2] = 1.0f;
@@ -76,6 +84,13 @@ TEST(AlphaTables, RoughnessTexturedFloorThroughTheCacheAgreesPerBlock) {
     stats = std::move(r.stats);
   }
   expectBlocksAgree(cached, kSpp, ref, kRefSpp, kSize, kSize, 0.03, "rcache");
+  // The check can tell: the floor at the texture's mean α (one table for the whole floor) fails it.
+  Scene uniform = s;
+  uniform.bsdfs[0] = glossyAt(0.45f);
+  std::vector<Image> meanAlpha;
+  for (int k = 1; k <= kSeeds; ++k)
+    meanAlpha.push_back(renderScene(uniform, rcacheSettings(uniform, {{"fallback", "false"}}), kSpp, 300 + k).image);
+  EXPECT_GT(blockExcess(meanAlpha, kSpp, ref, kRefSpp, kSize, kSize, 0.03, "mean alpha", false), 0.0);
   const std::string entry = materialEntry(stats, "floor");
   EXPECT_NE(entry.find("radiance cache"), std::string::npos) << entry;
   const size_t nodes = entry.find("\"alpha_nodes\": ");
