@@ -46,22 +46,16 @@ TEST(AlphaTables, PointChoiceInterpolatesInLogAlpha) {
   EXPECT_EQ(plan.tableAt(0.3f, 0.01f), 5);
 }
 
-Properties floorProps(float alpha) {
+// The box scene's floor (test::glossy's roughconductor) with its α a 4×4 checkerboard of 0.3 and 0.6;
+// the parameter itself holds the mean, as the loader sets it.
+Scene roughTexturedBox(int size) {
+  Scene s = boxScene(0.0f, size, size);
   Properties props;
   props.pluginType = "roughconductor";
   props.set("distribution", stringProp("ggx"));
-  props.set("alpha", floatProp(alpha));
+  props.set("alpha", floatProp(0.45));
   props.set("material", stringProp("none"));
   props.set("specular_reflectance", rgbProp(0.8f, 0.8f, 0.8f));
-  return props;
-}
-
-BsdfPtr glossyAt(float alpha) { return createBsdf(floorProps(alpha), {}, "floor"); }
-
-// The floor's α a 4×4 checkerboard of 0.3 and 0.6 (the parameter itself holds the mean, as the loader sets it).
-Scene roughTexturedBox(int size) {
-  Scene s = boxScene(0.0f, size, size);
-  const Properties props = floorProps(0.45f);
   UvTransform toUv;
   toUv.m = Mat3(4.0f);
   toUv.m[2][2] = 1.0f;
@@ -86,7 +80,7 @@ TEST(AlphaTables, RoughnessTexturedFloorThroughTheCacheAgreesPerBlock) {
   expectBlocksAgree(cached, kSpp, ref, kRefSpp, kSize, kSize, 0.03, "rcache");
   // The check can tell: the floor at the texture's mean α (one table for the whole floor) fails it.
   Scene uniform = s;
-  uniform.bsdfs[0] = glossyAt(0.45f);
+  uniform.bsdfs[0] = glossy(0.45f);
   std::vector<Image> meanAlpha;
   for (int k = 1; k <= kSeeds; ++k)
     meanAlpha.push_back(renderScene(uniform, rcacheSettings(uniform, {{"fallback", "false"}}), kSpp, 300 + k).image);
