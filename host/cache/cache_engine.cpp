@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "bsdf/alpha_family.h"
-#include "geometry/shading_frame.h"
 #include "cache/direct_light_batch.h"
 #include "cache/radius_floor.h"
 #include "cache/record_octree.h"
@@ -189,7 +188,7 @@ void CacheEngine::radianceOut(PointView pts, std::vector<Color>& out, float rela
       // path continues: continuePaths starts that point's sequence afresh for the BSDF sample.
       const bool continues = continuesPath(sp);
       BsdfPtr& pointBsdf = holders.emplace_back();  // a spatially varying BSDF at this point (Bsdf::at)
-      const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp.hit, sp.frame, pointBsdf);
+      const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf);
       jobs.push_back({&directLightContext(sp), &sp.hit, sp.frame, sp.wo, &bsdf,
                       continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1),
                       continues               ? DirectEstimator::LightStrategy
@@ -608,7 +607,7 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, PointView pts,
       uint64_t contributions = 0, count = 0;
       for (size_t i = b; i < e; ++i) {
         BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
-        const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[static_cast<size_t>(pts[i].hit.bsdf)], pts[i].hit, pts[i].frame, pointBsdf);
+        const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[static_cast<size_t>(pts[i].hit.bsdf)], pts[i], pointBsdf);
         if (!bsdf.isDiffuseOnly()) continue;
         lambertian[i] = 1;
         ++count;
@@ -736,7 +735,7 @@ void CacheEngine::shadeLambda(PointView pts, size_t begin, size_t count, int ord
         d = len > 0.0f ? d / len : Vec3(0, 0, 1);
         if (d.z < 1e-2f) d = glm::normalize(Vec3(d.x, d.y, 1e-2f));
         BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
-        const Color f = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp.hit, sp.frame, pointBsdf).eval(sp.wo, d) / d.z;
+        const Color f = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf).eval(sp.wo, d) / d.z;
         const Color Lo = f * glm::max(E, Color(0.0f));
         slot(j) = isFinite(Lo) ? Lo : Color(0.0f);
       }
@@ -919,7 +918,7 @@ void CacheEngine::continuePaths(PointView pts, std::vector<Color>& out, float re
       const Vec2 u = rng.next2D();
       const float uLobe = rng.nextFloat();
       BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
-      const auto s = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp.hit, sp.frame, pointBsdf).sample(sp.wo, uLobe, u);
+      const auto s = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf).sample(sp.wo, uLobe, u);
       if (!s || !isFinite(s->weight) || maxComponent(s->weight) <= 0.0f) continue;
       Color w = s->weight;
       if (sp.depth >= rrDepth_) {

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/shading_frame.h"
 #include "cache/final_pass_memory.h"
 #include "cache/rng_salts.h"
 #include "core/error.h"
@@ -233,7 +232,7 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
         ShadePoint& sp = s.prim[i].sp;
         if (sp.active && withinMaxDepth(maxDepth, 2)) {
           BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
-          const Bsdf& bsdf = bsdfAt(*run_.ctx.scene.bsdfs[sp.hit.bsdf], sp.hit, sp.frame, pointBsdf);
+          const Bsdf& bsdf = bsdfAt(*run_.ctx.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf);
           sp.lightSamples = params.lightSamples;
           bool lightOnly = false;
           // Importance-sampled points: the continuation's ray doubles as the BSDF sample.

@@ -51,6 +51,11 @@ inline void continueLowDiscrepancy(ShadePoint& sp, const Rng& rng) {
   sp.ldDim = rng.lowDiscrepancyDim();
 }
 
+// The BSDF at a shade point (geometry/shading_frame.h; both of its frames mirrored alike).
+inline const Bsdf& bsdfAt(const Bsdf& material, const ShadePoint& sp, BsdfPtr& holder) {
+  return bsdfAt(material, sp.hit, sp.frame, sp.geometryFrame.n, holder);
+}
+
 // Builds the shade point of a ray's hit (dir = ray direction, world).
 // `material`: the hit's BSDF where it may perturb the frame (normalmap, bumpmap), else null.
 inline ShadePoint makeShadePoint(const Hit& hit, const Vec3& dir, int depth, int level, uint64_t seed,

@@ -15,9 +15,9 @@ Frame shadingFrame(const Bsdf& material, const Hit& hit, const Vec3& woWorld) {
   return Frame(base.toWorld(turn.t), base.toWorld(turn.b), base.toWorld(turn.n));
 }
 
-const Bsdf& bsdfAt(const Bsdf& material, const Hit& hit, const Frame& frame, BsdfPtr& holder) {
+const Bsdf& bsdfAt(const Bsdf& material, const Hit& hit, const Frame& frame, const Vec3& baseNormal, BsdfPtr& holder) {
   if (!material.perturbsFrame()) return bsdfAt(material, hit.uv, holder);
-  holder = material.atFrame(hit.uv, frame.toLocal(hit.ns));
+  holder = material.atFrame(hit.uv, frame.toLocal(baseNormal));
   return holder ? *holder : material;
 }
 

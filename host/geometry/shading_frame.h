@@ -12,7 +12,8 @@ Frame shadingFrame(const Bsdf& material, const Hit& hit, const Vec3& woWorld);
 
 // The BSDF at `hit` shaded in `frame` (shadingFrame, or its mirror to the viewer): bsdfAt(material,
 // hit.uv) for materials that keep the frame; for those that perturb it, the point BSDF with the
-// unperturbed normal (hit.ns) in `frame`'s coordinates. `holder` keeps a point BSDF alive.
-const Bsdf& bsdfAt(const Bsdf& material, const Hit& hit, const Frame& frame, BsdfPtr& holder);
+// unperturbed normal `baseNormal` (world: hit.ns, mirrored with `frame` where that is mirrored) in
+// `frame`'s coordinates. `holder` keeps a point BSDF alive.
+const Bsdf& bsdfAt(const Bsdf& material, const Hit& hit, const Frame& frame, const Vec3& baseNormal, BsdfPtr& holder);
 
 }  // namespace rc

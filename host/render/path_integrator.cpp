@@ -42,7 +42,7 @@ Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings,
     // The frame a normal/bump map turns, and the BSDF at this point (Bsdf::at, Bsdf::atFrame).
     const Frame frame = shadingFrame(*scene.bsdfs[hit.bsdf], hit, -ray.d);
     BsdfPtr pointBsdf;
-    const Bsdf& bsdf = bsdfAt(*scene.bsdfs[hit.bsdf], hit, frame, pointBsdf);
+    const Bsdf& bsdf = bsdfAt(*scene.bsdfs[hit.bsdf], hit, frame, hit.ns, pointBsdf);
     const Vec3 wo = frame.toLocal(-ray.d);
     // A textured factor scales everything this vertex reflects (Bsdf::tint), not its emission.
     if (bsdf.tinted()) throughput *= bsdf.tint(hit.uv, wo);

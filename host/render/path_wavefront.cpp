@@ -89,7 +89,7 @@ class BounceShader {
     // The frame a normal/bump map turns, and the BSDF at this point (Bsdf::at, Bsdf::atFrame).
     const Frame frame = shadingFrame(*bsdfs[hit.bsdf], hit, -ray.d);
     BsdfPtr pointBsdf;
-    const Bsdf& bsdf = bsdfAt(*bsdfs[hit.bsdf], hit, frame, pointBsdf);
+    const Bsdf& bsdf = bsdfAt(*bsdfs[hit.bsdf], hit, frame, hit.ns, pointBsdf);
     const Vec3 wo = frame.toLocal(-ray.d);
     // A textured factor scales everything this vertex reflects (Bsdf::tint), not its emission.
     if (bsdf.tinted()) throughput *= bsdf.tint(hit.uv, wo);

@@ -32,39 +32,48 @@ Image renderWith(const Scene& s, PathCore core, int spp, uint64_t seed) {
 
 float tan2(float c) { return (1.0f - c * c) / (c * c); }
 
+// `below`: camera and light under the rectangle, the normal map around a twosided diffuse BSDF.
+std::string tiltedFloorXml(const Vec3& n, const Vec3& toLight, bool shadowing, bool below) {
+  const std::string diffuse = "<bsdf type=\"diffuse\"><rgb name=\"reflectance\" value=\"0.5\"/></bsdf>";
+  return "<scene version=\"3.0.0\">\n"
+         "<integrator type=\"path\"><integer name=\"max_depth\" value=\"2\"/></integrator>"
+         "<sensor type=\"perspective\"><float name=\"fov\" value=\"40\"/>"
+         "<transform name=\"to_world\"><lookat origin=\"0, 0, " + std::string(below ? "-5" : "5") +
+         "\" target=\"0, 0, 0\" up=\"0, 1, 0\"/></transform>"
+         "<film type=\"hdrfilm\"><integer name=\"width\" value=\"16\"/><integer name=\"height\" value=\"16\"/>"
+         "<rfilter type=\"box\"/></film></sensor>\n"
+         "<shape type=\"rectangle\"><transform name=\"to_world\"><scale value=\"5\"/></transform>"
+         "<bsdf type=\"normalmap\"><boolean name=\"use_shadowing_function\" value=\"" + std::string(shadowing ? "true" : "false") +
+         "\"/><rgb name=\"normalmap\" value=\"" + std::to_string(0.5f * (n.x + 1.0f)) + ", 0.5, " +
+         std::to_string(0.5f * (n.z + 1.0f)) + "\"/>" +
+         (below ? "<bsdf type=\"twosided\">" + diffuse + "</bsdf>" : diffuse) + "</bsdf></shape>\n"
+         "<emitter type=\"directional\"><vector name=\"direction\" value=\"" + std::to_string(-toLight.x) + ", " +
+         std::to_string(-toLight.y) + ", " + std::to_string(-toLight.z) + "\"/><rgb name=\"irradiance\" value=\"3\"/></emitter>\n"
+         "</scene>\n";
+}
+
+// From above, and from below through a twosided nested BSDF (rcache mirrors both of the point's
+// frames to the viewer there): ρ/π·E·|n·l|·G(l), G on the angle of l to the unperturbed normal.
 TEST(NormalMapRender, ConstantTiltUnderADirectionalLightIsTheClosedForm) {
   const float tilt = 30.0f * kPiF / 180.0f, rho = 0.5f, E = 3.0f;
-  const Vec3 toLight = glm::normalize(Vec3(0.5f, 0.2f, 1.0f));
   // The rectangle's frame: t = dp/du = +x, n = +z; the normal map tilts n toward t.
   const Vec3 n(std::sin(tilt), 0.0f, std::cos(tilt));
-  for (const bool shadowing : {false, true}) {
-    TempDir dir;
-    const std::string xml =
-        "<scene version=\"3.0.0\">\n"
-        "<integrator type=\"path\"><integer name=\"max_depth\" value=\"2\"/></integrator>"
-        "<sensor type=\"perspective\"><float name=\"fov\" value=\"40\"/>"
-        "<transform name=\"to_world\"><lookat origin=\"0, 0, 5\" target=\"0, 0, 0\" up=\"0, 1, 0\"/></transform>"
-        "<film type=\"hdrfilm\"><integer name=\"width\" value=\"16\"/><integer name=\"height\" value=\"16\"/>"
-        "<rfilter type=\"box\"/></film></sensor>\n"
-        "<shape type=\"rectangle\"><transform name=\"to_world\"><scale value=\"5\"/></transform>"
-        "<bsdf type=\"normalmap\"><boolean name=\"use_shadowing_function\" value=\"" + std::string(shadowing ? "true" : "false") +
-        "\"/><rgb name=\"normalmap\" value=\"" + std::to_string(0.5f * (n.x + 1.0f)) + ", 0.5, " + std::to_string(0.5f * (n.z + 1.0f)) +
-        "\"/><bsdf type=\"diffuse\"><rgb name=\"reflectance\" value=\"0.5\"/></bsdf></bsdf></shape>\n"
-        "<emitter type=\"directional\"><vector name=\"direction\" value=\"" + std::to_string(-toLight.x) + ", " +
-        std::to_string(-toLight.y) + ", " + std::to_string(-toLight.z) + "\"/><rgb name=\"irradiance\" value=\"3\"/></emitter>\n"
-        "</scene>\n";
-    const Scene s = loadText(dir, xml);
-    const float g = shadowing ? 2.0f / (1.0f + std::sqrt(1.0f + std::fmin(0.125f * tan2(n.z), 1.0f) * tan2(toLight.z))) : 1.0f;
-    const float expected = rho / kPiF * E * glm::dot(n, toLight) * g;
-    const Image images[3] = {renderWith(s, PathCore::Scalar, 4, 1), renderWith(s, PathCore::Wavefront, 4, 1),
-                             renderScene(s, rcacheSettings(s), 4, 1).image};
-    const char* names[3] = {"scalar path", "wavefront path", "rcache"};
-    for (int k = 0; k < 3; ++k)
-      for (const Color& c : images[k].pixels)
-        // The light is a Dirac and the normal constant: every sample is the closed form up to
-        // float rounding (the text of the normal map's rgb value, 6 digits).
-        ASSERT_NEAR(c.g, expected, 1e-4f * expected) << names[k] << " shadowing " << shadowing;
-  }
+  for (const bool below : {false, true})
+    for (const bool shadowing : {false, true}) {
+      const Vec3 toLight = glm::normalize(Vec3(0.5f, 0.2f, below ? -1.0f : 1.0f));
+      TempDir dir;
+      const Scene s = loadText(dir, tiltedFloorXml(n, toLight, shadowing, below));
+      const float g = shadowing ? 2.0f / (1.0f + std::sqrt(1.0f + std::fmin(0.125f * tan2(n.z), 1.0f) * tan2(toLight.z))) : 1.0f;
+      const float expected = rho / kPiF * E * std::fabs(glm::dot(n, toLight)) * g;
+      const Image images[3] = {renderWith(s, PathCore::Scalar, 4, 1), renderWith(s, PathCore::Wavefront, 4, 1),
+                               renderScene(s, rcacheSettings(s), 4, 1).image};
+      const char* names[3] = {"scalar path", "wavefront path", "rcache"};
+      for (int k = 0; k < 3; ++k)
+        for (const Color& c : images[k].pixels)
+          // The light is a Dirac and the normal constant: every sample is the closed form up to
+          // float rounding (the text of the normal map's rgb value, 6 digits).
+          ASSERT_NEAR(c.g, expected, 1e-4f * expected) << names[k] << " shadowing " << shadowing << " below " << below;
+    }
 }
 
 // The box scene's floor under an 8×8 bitmap of normals tilted 20°–37° toward dp/du (+x), varying
