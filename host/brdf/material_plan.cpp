@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -11,6 +12,7 @@
 #include "brdf/table_builder.h"
 #include "brdf/table_cache.h"
 #include "brdf/table_layout.h"
+#include "bsdf/alpha_family.h"
 #include "core/error.h"
 #include "core/json_writer.h"
 
@@ -33,7 +35,9 @@ using Kind = BrdfTableSet::Kind;
 Kind classify(const Bsdf& bsdf) {
   const uint32_t lobes = bsdf.lobes();
   if (lobes & (kLobeDelta | kLobeTransmission)) return Kind::Sampled;
-  // Parameters textured per point (Bsdf::at): one table per material does not describe it.
+  // Parameters textured per point (Bsdf::at): one table per material does not describe it, unless
+  // the only one is a roughness (tables over α).
+  if (alphaFamilyOf(bsdf) && lobes == kLobeGlossy) return Kind::Glossy;
   if (bsdf.spatiallyVarying()) return Kind::Sampled;
   if (lobes == kLobeDiffuse) return Kind::Diffuse;
   if (lobes & kLobeGlossy) return Kind::Glossy;
@@ -133,7 +137,9 @@ void BrdfTableSet::build(const std::vector<BsdfPtr>& bsdfs, const BrdfTableOptio
     if (disk.cache->enabled()) cacheDir_ = disk.cache->directory();
   }
   std::map<std::string, int> tableByKey;  // equal parameter keys share one table
-  for (size_t m = 0; m < bsdfs.size(); ++m) plans_.push_back(planMaterial(*bsdfs[m], kinds[m], opt, disk, tableByKey));
+  for (size_t m = 0; m < bsdfs.size(); ++m)
+    plans_.push_back(kinds[m] == Kind::Glossy && alphaFamilyOf(*bsdfs[m]) ? planAlphaNodes(*bsdfs[m], opt, disk, tableByKey)
+                                                                            : planMaterial(*bsdfs[m], kinds[m], opt, disk, tableByKey));
 }
 
 MaterialPlan BrdfTableSet::planMaterial(const Bsdf& bsdf, Kind kind, const BrdfTableOptions& opt,
@@ -194,6 +200,49 @@ MaterialPlan BrdfTableSet::planMaterial(const Bsdf& bsdf, Kind kind, const BrdfT
   return plan;
 }
 
+MaterialPlan BrdfTableSet::planAlphaNodes(const Bsdf& bsdf, const BrdfTableOptions& opt, const BrdfDiskTables& disk,
+                                          std::map<std::string, int>& tableByKey) {
+  const auto start = std::chrono::steady_clock::now();
+  const AlphaFamily& family = *alphaFamilyOf(bsdf);
+  const auto [lo, hi] = family.alphaRange();
+  const std::vector<float> nodes = alphaNodesOver(lo, hi);
+  // The sharpest α needs the highest order: it decides the technique and the order of all nodes.
+  MaterialPlan plan = planMaterial(*family.withAlpha(nodes.front()), Kind::Glossy, opt, disk, tableByKey);
+  plan.name = bsdf.id.empty() ? bsdf.typeName() : bsdf.id;
+  if (plan.tableIndex >= 0) {
+    BrdfTableOptions atOrder = opt;
+    atOrder.orderOverride = plan.shOrder;
+    plan.alphaNodes = nodes;
+    plan.alphaTables.push_back(plan.tableIndex);
+    for (size_t k = 1; k < nodes.size(); ++k) {
+      const MaterialPlan node = planMaterial(*family.withAlpha(nodes[k]), Kind::Glossy, atOrder, disk, tableByKey);
+      plan.alphaTables.push_back(node.tableIndex);
+      plan.tableCacheHit = plan.tableCacheHit && node.tableCacheHit;
+    }
+  }
+  plan.tableMs = millisecondsSince(start);
+  return plan;
+}
+
+std::vector<float> alphaNodesOver(float lo, float hi) {
+  if (!(lo > 0.0f) || !(hi > lo * 1.0001f)) return {lo > 0.0f ? lo : hi};
+  const double ratio = std::log(double(hi) / lo);
+  const int n = std::clamp(static_cast<int>(std::ceil(ratio / std::log(std::sqrt(2.0)))) + 1, 2, kMaxAlphaNodes);
+  std::vector<float> nodes(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k) nodes[static_cast<size_t>(k)] = static_cast<float>(lo * std::exp(ratio * k / (n - 1)));
+  nodes.back() = hi;
+  return nodes;
+}
+
+int MaterialPlan::tableAt(float alpha, float u) const {
+  if (alphaNodes.empty()) return tableIndex;
+  if (!(alpha > alphaNodes.front())) return alphaTables.front();
+  if (!(alpha < alphaNodes.back())) return alphaTables.back();
+  const size_t k = static_cast<size_t>(std::upper_bound(alphaNodes.begin(), alphaNodes.end(), alpha) - alphaNodes.begin()) - 1;
+  const float t = std::log(alpha / alphaNodes[k]) / std::log(alphaNodes[k + 1] / alphaNodes[k]);
+  return u < t ? alphaTables[k + 1] : alphaTables[k];
+}
+
 int BrdfTableSet::maxTableOrder() const {
   int n = 0;
   for (const RcBrdfTable& t : tables_) n = std::max(n, t.order);
@@ -232,6 +281,7 @@ std::string BrdfTableSet::materialsJson() const {
         .field("sh_order", p.shOrder)
         .field("table_ms", p.tableMs)
         .field("table_cache_hit", p.tableCacheHit)
+        .field("alpha_nodes", static_cast<int>(p.alphaNodes.size()))
         .endObject();
   w.endArray();
   return w.str();

@@ -2,7 +2,11 @@
 // Per-material technique, SH order and BRDF×cos coefficient table (ARCHITECTURE.md §Pipeline, §Kernels
 //). For every BSDF of a scene:
 //   delta lobes or transmission        → "importance sampling" (no table)
-//   textured per point (Bsdf::at)      → "importance sampling" (no table)
+//   textured per point (Bsdf::at)      → "importance sampling" (no table), except:
+//     only an isotropic roughness      → tables over α (bsdf/alpha_family.h): the technique and
+//     texture                            order of the sharpest α the texture takes; tables at up to
+//                                        kMaxAlphaNodes α spaced by ≤ √2 over its range, all at that
+//                                        order, one picked per point (MaterialPlan::tableAt)
 //   diffuse only                       → "irradiance cache": order-3 table of the clamped-cosine
 //                                        lobe (same table machinery as glossy, one cache)
 //   glossy                             → "radiance cache" at the smallest order whose worst
@@ -40,7 +44,19 @@ struct MaterialPlan {
   int tableIndex = -1;       // index into BrdfTableSet::tables(), -1 without a table
   double truncationError = 0.0;  // worst relative L2 truncation error at shOrder (glossy; 0 if overridden)
   int tableKind = -1;        // RC_TABLE_ISOTROPIC_1D / RC_TABLE_ANISOTROPIC_2D, -1 without a table
+  // A material tabulated over α: its nodes (ascending) and each one's table; empty otherwise.
+  std::vector<float> alphaNodes;
+  std::vector<int> alphaTables;
+  // The table of a point of roughness α: one of the two nodes around α, the upper one with
+  // probability t (u ∈ [0, 1) uniform), t = α's position between them in log α, so that the
+  // expected coefficients are those interpolated in log α; α outside the nodes takes the nearest end.
+  // tableIndex when the material has no α nodes.
+  int tableAt(float alpha, float u) const;
 };
+
+constexpr int kMaxAlphaNodes = 8;
+// Nodes over [lo, hi]: geometric, ratio ≤ √2 between neighbours while kMaxAlphaNodes allow.
+std::vector<float> alphaNodesOver(float lo, float hi);
 
 struct BrdfTableOptions {
   int orderOverride = 0;       // > 0: every glossy material is radiance-cached at this order
@@ -97,6 +113,9 @@ class BrdfTableSet {
   // One material's plan, adding its table unless an equal one (tableByKey) exists.
   MaterialPlan planMaterial(const Bsdf& bsdf, Kind kind, const BrdfTableOptions& opt, const BrdfDiskTables& disk,
                             std::map<std::string, int>& tableByKey);
+  // The plan of a material tabulated over α (planMaterial per node).
+  MaterialPlan planAlphaNodes(const Bsdf& bsdf, const BrdfTableOptions& opt, const BrdfDiskTables& disk,
+                              std::map<std::string, int>& tableByKey);
   std::vector<MaterialPlan> plans_;
   std::vector<RcBrdfTable> tables_;
   std::vector<float> data_;

@@ -9,9 +9,21 @@
 #include <optional>
 #include <string>
 
+#include "core/frame.h"
 #include "core/math.h"
 
 namespace rc {
+
+class Bsdf;
+
+// What a BSDF that perturbs the shading frame (normalmap, bumpmap) reads of its surface point, in
+// the local coordinates of the unperturbed shading frame (z = the interpolated shading normal).
+struct FramePoint {
+  Vec2 uv{0.0f};
+  Vec3 ng{0, 0, 1};              // geometric normal
+  Vec3 dpdu{0.0f}, dpdv{0.0f};   // surface partials along u and v (zero where the shape has none)
+  Vec3 wo{0, 0, 1};              // toward the viewer
+};
 
 enum BsdfLobe : uint32_t {
   kLobeDiffuse = 1u << 0,  // Lambertian-like, view-independent
@@ -68,6 +80,19 @@ class Bsdf {
   // default) means the BSDF is the same everywhere; use bsdfAt() below.
   virtual bool spatiallyVarying() const { return false; }
   virtual std::shared_ptr<const Bsdf> at(const Vec2& /*uv*/) const { return nullptr; }
+
+  // normalmap / bumpmap: the BSDF turns the shading frame. perturbedFrame() is that frame at a
+  // surface point as a rotation of the unperturbed one (its axes in the unperturbed local
+  // coordinates); eval, pdf and sample describe the nested BSDF in the perturbed frame (what BRDF
+  // coefficient tables hold). atFrame() builds the BSDF at a point shaded in the perturbed frame:
+  // the nested BSDF at uv with the factors Mitsuba applies in the unperturbed frame, whose normal
+  // is `baseNormal` in the perturbed local coordinates. Callers: geometry/shading_frame.h.
+  virtual bool perturbsFrame() const { return false; }
+  virtual Frame perturbedFrame(const FramePoint& /*point*/) const { return Frame(); }
+  virtual std::shared_ptr<const Bsdf> atFrame(const Vec2& /*uv*/, const Vec3& /*baseNormal*/) const { return nullptr; }
+  // Seen from behind, the point's frame may be mirrored to the viewer (a twosided material, or one
+  // that perturbs the frame of a twosided material).
+  virtual bool isTwoSided() const { return false; }
 
   std::string id;  // the scene's id attribute, or "<type>#<n>" when anonymous
 };

@@ -39,6 +39,8 @@ const FactoryEntry kFactory[] = {
      "base_color:rgb roughness anisotropic metallic spec_trans spec_tint sheen sheen_tint flatness clearcoat "
      "clearcoat_gloss"},
     {"merl", createMerlBsdf, nullptr, 0, 0, ""},
+    {"normalmap", nullptr, createNormalMapBsdf, 1, 1, "normalmap:rgb"},
+    {"bumpmap", nullptr, createBumpMapBsdf, 1, 1, "bumpmap_height"},
 };
 
 const FactoryEntry* findEntry(const std::string& type) {
@@ -90,6 +92,11 @@ BsdfPtr createBsdf(const Properties& props, const std::vector<BsdfPtr>& nested, 
     throw Error("<bsdf type=\"" + props.pluginType + "\">: takes " + expected + " nested BSDF(s), got " +
                 std::to_string(nested.size()));
   }
+  // The integrators perturb the point's frame once, from the material it is shaded with.
+  for (const BsdfPtr& b : nested)
+    if (b && b->perturbsFrame())
+      throw Error("<bsdf type=\"" + props.pluginType + "\">: a nested '" + b->typeName() +
+                  "' is not supported (a normalmap or bumpmap must be the shape's outermost BSDF)");
   for (const auto& [name, texture] : textures)
     if (!texture || !isBsdfTextureParameter(props.pluginType, name))
       throw Error("<bsdf type=\"" + props.pluginType + "\">: parameter '" + name + "' cannot be a texture");

@@ -33,6 +33,12 @@ std::shared_ptr<Bsdf> createRoughDielectricBsdf(const Properties& props, const s
                                                 const BsdfTextures& textures);
 std::shared_ptr<Bsdf> createPrincipledBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
                                            const BsdfTextures& textures);
+// The name the loader gives a bumpmap's one texture child (Mitsuba takes it under any name).
+constexpr const char* kBumpMapTextureParameter = "bumpmap_height";
+std::shared_ptr<Bsdf> createNormalMapBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
+                                          const BsdfTextures& textures);
+std::shared_ptr<Bsdf> createBumpMapBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
+                                        const BsdfTextures& textures);
 std::shared_ptr<Bsdf> createMaskBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
                                      const BsdfTextures& textures);
 

@@ -34,6 +34,18 @@ Microfacet RoughnessTextures::distributionAt(const Microfacet& base, const Vec2&
   return Microfacet(base.type(), au, av, base.sampleVisible());
 }
 
+std::pair<float, float> RoughnessTextures::range(const Microfacet& base) const {
+  constexpr int kLattice = 257;
+  float lo = INFINITY, hi = -INFINITY;
+  for (int j = 0; j < kLattice; ++j)
+    for (int i = 0; i < kLattice; ++i) {
+      const float a = distributionAt(base, Vec2((i + 0.5f) / kLattice, (j + 0.5f) / kLattice)).alphaU();
+      lo = std::fmin(lo, a);
+      hi = std::fmax(hi, a);
+    }
+  return {lo, hi};
+}
+
 std::string RoughnessTextures::key() const {
   if (!textured()) return "";
   return "alpha_u=" + (u_ ? textureFingerprint(*u_) : std::string("-")) +

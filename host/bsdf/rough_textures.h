@@ -3,6 +3,7 @@
 // eval_1: the luminance of an RGB texture), a content fingerprint for parameterKey(), and the
 // textures of a microfacet roughness (alpha, or alpha_u / alpha_v).
 #include <string>
+#include <utility>
 
 #include "bsdf/microfacet.h"
 #include "bsdf/bsdf_textures.h"
@@ -26,6 +27,9 @@ class RoughnessTextures {
   // `base` with α taken from the textures at uv (the untextured one of alpha_u/alpha_v kept).
   Microfacet distributionAt(const Microfacet& base, const Vec2& uv) const;
   std::string key() const;  // "" when untextured
+  // The smallest and largest α_u the textures give `base` over a 257×257 uv lattice (bilinear and
+  // nearest bitmaps up to that size and checkerboards reach their extremes on it).
+  std::pair<float, float> range(const Microfacet& base) const;
 
  private:
   TexturePtr u_, v_;

@@ -17,12 +17,13 @@
 #include "bsdf/conductor_fresnel.h"
 #include "bsdf/microfacet.h"
 #include "bsdf/plugins.h"
+#include "bsdf/alpha_family.h"
 #include "bsdf/rough_textures.h"
 
 namespace rc {
 namespace {
 
-class RoughConductorBsdf final : public Bsdf {
+class RoughConductorBsdf final : public Bsdf, public AlphaFamily {
  public:
   RoughConductorBsdf(const Microfacet& distr, const ConductorFresnel& fresnel, RoughnessTextures roughness)
       : distr_(distr), fresnel_(fresnel), roughness_(std::move(roughness)) {}
@@ -78,6 +79,16 @@ class RoughConductorBsdf final : public Bsdf {
                                                       RoughnessTextures());
     point->id = id;
     return point;
+  }
+
+  bool variesOnlyInAlpha() const override { return roughness_.textured() && roughness_.isotropic() && distr_.isotropic(); }
+  std::pair<float, float> alphaRange() const override { return roughness_.range(distr_); }
+  float alphaAt(const Vec2& uv) const override { return roughness_.distributionAt(distr_, uv).alphaU(); }
+  BsdfPtr withAlpha(float alpha) const override {
+    auto node = std::make_shared<RoughConductorBsdf>(Microfacet(distr_.type(), alpha, alpha, distr_.sampleVisible()),
+                                                     fresnel_, RoughnessTextures());
+    node->id = id;
+    return node;
   }
 
  private:

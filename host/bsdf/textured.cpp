@@ -1,11 +1,12 @@
 #include "bsdf/textured.h"
 
+#include "bsdf/alpha_family.h"
 #include "bsdf/bsdf_params.h"
 
 namespace rc {
 namespace {
 
-class TexturedBsdf final : public Bsdf {
+class TexturedBsdf final : public Bsdf, public AlphaFamily {
  public:
   TexturedBsdf(BsdfPtr unit, TexturePtr factor) : unit_(std::move(unit)), factor_(std::move(factor)) { id = unit_->id; }
   Color eval(const Vec3& wo, const Vec3& wi) const override { return unit_->eval(wo, wi); }
@@ -26,6 +27,11 @@ class TexturedBsdf final : public Bsdf {
     BsdfPtr unitHere = unit_->at(uv);
     return unitHere ? std::make_shared<TexturedBsdf>(std::move(unitHere), factor_) : nullptr;
   }
+  // The factor applies outside the tables: the family is the unit BSDF's.
+  bool variesOnlyInAlpha() const override { return alphaFamilyOf(*unit_) != nullptr; }
+  std::pair<float, float> alphaRange() const override { return alphaFamilyOf(*unit_)->alphaRange(); }
+  float alphaAt(const Vec2& uv) const override { return alphaFamilyOf(*unit_)->alphaAt(uv); }
+  BsdfPtr withAlpha(float alpha) const override { return alphaFamilyOf(*unit_)->withAlpha(alpha); }
 
  private:
   BsdfPtr unit_;

@@ -43,6 +43,7 @@ class TwoSidedBsdf final : public Bsdf {
     return "twosided(" + front_->parameterKey() + ";" + back_->parameterKey() + ")";
   }
   std::string typeName() const override { return "twosided"; }
+  bool isTwoSided() const override { return true; }
   Color tint(const Vec2& uv, const Vec3& wo) const override {
     return wo.z < 0.0f ? back_->tint(uv, flipZ(wo)) : front_->tint(uv, wo);
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bsdf/alpha_family.h"
 #include "cache/direct_light_batch.h"
 #include "cache/radius_floor.h"
 #include "cache/record_octree.h"
@@ -98,7 +99,7 @@ CacheEngine::CacheEngine(const RenderContext& ctx, ShBackend& backend, const Rca
   planOrder_.assign(bsdfs.size(), 0);
   twoSided_.assign(bsdfs.size(), false);
   for (size_t i = 0; i < bsdfs.size(); ++i) {
-    twoSided_[i] = bsdfs[i]->typeName() == "twosided";
+    twoSided_[i] = bsdfs[i]->isTwoSided();
     const MaterialPlan* plan = i < plans.size() ? &plans[i] : nullptr;
     if (plan && plan->tableIndex >= 0 && isCached(plan->technique)) {
       planTech_[i] = plan->technique;
@@ -180,7 +181,7 @@ void CacheEngine::radianceOut(PointView pts, std::vector<Color>& out, float rela
       // path continues: continuePaths starts that point's sequence afresh for the BSDF sample.
       const bool continues = continuesPath(sp);
       BsdfPtr& pointBsdf = batch.holders.emplace_back();  // a spatially varying BSDF at this point (Bsdf::at)
-      const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf);
+      const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf);
       batch.jobs.push_back({&directLightContext(sp), &sp.hit, sp.frame, sp.wo, &bsdf,
                       continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1),
                       continues               ? DirectEstimator::LightStrategy
@@ -303,9 +304,9 @@ void CacheEngine::lookUp(RadianceCache& cache, PointView pts, const std::vector<
     for (size_t j = b; j < e; ++j) {
       const ShadePoint& sp = pts[todo[j]];
       Lookup& lk = lookups[todo[j]];
-      reader.lookup(sp.hit.p, sp.frame.n, lk);
+      reader.lookup(sp.hit.p, sp.geometryFrame.n, lk);
       if (!lk.covered() && relaxedScale > 1.0f) {
-        reader.lookup(sp.hit.p, sp.frame.n, lk, relaxedScale);
+        reader.lookup(sp.hit.p, sp.geometryFrame.n, lk, relaxedScale);
         if (lk.covered()) ++stats_.relaxedLookups;
       }
     }
@@ -358,7 +359,7 @@ std::vector<ShadePoint> CacheEngine::recordCandidates(PointView pts,
       if (near) return;
       const ShadePoint& c = cands[id];
       const float sep = sepPx * footprint(c.hit.p, c.level);
-      if (glm::length(c.hit.p - sp.hit.p) < sep && glm::dot(c.frame.n, sp.frame.n) > 0.5f) near = true;
+      if (glm::length(c.hit.p - sp.hit.p) < sep && glm::dot(c.geometryFrame.n, sp.geometryFrame.n) > 0.5f) near = true;
     });
     if (near) continue;
     accepted.insert(static_cast<uint32_t>(cands.size()), sp.hit.p, sepPx * footprint(sp.hit.p, sp.level));
@@ -458,7 +459,7 @@ void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectB
     const float st = std::sqrt(std::max(0.0f, 1.0f - ct * ct));
     const float phi = 2.0f * kPi * (k + rayBatch.pattern[2 * s + 1]) / N + rayBatch.phi0[b];
     const Vec3 local(st * std::cos(phi), st * std::sin(phi), ct);
-    return Accel::spawnRay(c.hit, c.frame.toWorld(local));
+    return Accel::spawnRay(c.hit, c.geometryFrame.toWorld(local));
   });
   hits = ParallelArray<Hit>(total);
   parallelFor(total, 1024, [&](size_t b, size_t e) {
@@ -506,7 +507,7 @@ RecordInfo CacheEngine::clampRecord(const CacheKey& key, const ShadePoint& cand,
   const float fp = footprint(cand.hit.p, key.level);
   const float R = inv > 0.0 ? static_cast<float>(S / inv) : INFINITY;
   info.p = cand.hit.p;
-  info.frame = cand.frame;
+  info.frame = cand.geometryFrame;
   // Gradient limit (as Mitsuba's irrcache clamps R by E/|∇E|): over the influence radius the
   // first-order change of the record's coefficients may not exceed their own size,
   // ‖∇Λ‖·a·R ≤ ‖Λ‖ (norms over all coefficients and channels, so the higher bands of a glossy
@@ -599,7 +600,7 @@ void CacheEngine::interpolateAndShade(const CacheKey& key, PointView pts,
       uint64_t contributions = 0, count = 0;
       for (size_t i = b; i < e; ++i) {
         BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
-        const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[static_cast<size_t>(pts[i].hit.bsdf)], pts[i].hit.uv, pointBsdf);
+        const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[static_cast<size_t>(pts[i].hit.bsdf)], pts[i], pointBsdf);
         if (!bsdf.isDiffuseOnly()) continue;
         lambertian[i] = 1;
         ++count;
@@ -684,7 +685,10 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, PointView pts,
       // flat wall) the per-record path costs at most an O(n²) z-rotation per record, the world
       // path a full O(n³) rotation per point; both give the same Λ to float precision (ARCHITECTURE.md §Kernels).
       // The lookup tells (Lookup::sameNormal; contributions have n·n_i > 0).
-      const bool record = params_.autoFrame ? lookups[begin + j].sameNormal : !params_.worldFrame;
+      // A normal or bump map turns the point's frame off the records' plane: the world path.
+      const ShadePoint& sp = pts[begin + j];
+      const bool turned = sp.frame.n != sp.geometryFrame.n;
+      const bool record = params_.autoFrame ? lookups[begin + j].sameNormal && !turned : !params_.worldFrame;
       (record ? recordIdx : worldIdx).push_back(static_cast<uint32_t>(j));
     }
     stats_.recordFrameLookups += recordIdx.size();
@@ -724,7 +728,7 @@ void CacheEngine::shadeLambda(PointView pts, size_t begin, size_t count, int ord
         d = len > 0.0f ? d / len : Vec3(0, 0, 1);
         if (d.z < 1e-2f) d = glm::normalize(Vec3(d.x, d.y, 1e-2f));
         BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
-        const Color f = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf).eval(sp.wo, d) / d.z;
+        const Color f = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf).eval(sp.wo, d) / d.z;
         const Color Lo = f * glm::max(E, Color(0.0f));
         slot(j) = isFinite(Lo) ? Lo : Color(0.0f);
       }
@@ -741,7 +745,13 @@ void CacheEngine::shadeLambda(PointView pts, size_t begin, size_t count, int ord
   for (size_t j = 0; j < count; ++j) {
     const ShadePoint& sp = point(j);
     for (int c = 0; c < 3; ++c) dotBatch.wo[3 * j + c] = sp.wo[c];
-    dotBatch.material[j] = tables_.plans()[static_cast<size_t>(sp.hit.bsdf)].tableIndex;
+    const MaterialPlan& plan = tables_.plans()[static_cast<size_t>(sp.hit.bsdf)];
+    dotBatch.material[j] = plan.tableIndex;
+    if (!plan.alphaNodes.empty()) {  // a roughness texture: the table of the point's α
+      const float alpha = alphaFamilyOf(*ctx_.scene.bsdfs[static_cast<size_t>(sp.hit.bsdf)])->alphaAt(sp.hit.uv);
+      const float u = static_cast<float>(hashMix(sp.seed, 0, kSaltAlphaNode) >> 40) * 0x1p-24f;
+      dotBatch.material[j] = plan.tableAt(alpha, u);
+    }
   }
   tables_.fillBatch(dotBatch);
   std::vector<float> res;
@@ -901,7 +911,7 @@ void CacheEngine::continuePaths(PointView pts, std::vector<Color>& out, float re
       const Vec2 u = rng.next2D();
       const float uLobe = rng.nextFloat();
       BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
-      const auto s = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf).sample(sp.wo, uLobe, u);
+      const auto s = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf).sample(sp.wo, uLobe, u);
       if (!s || !isFinite(s->weight) || maxComponent(s->weight) <= 0.0f) continue;
       Color w = s->weight;
       if (sp.depth >= rrDepth_) {

@@ -78,8 +78,9 @@ class CacheEngine {
 
   // makeShadePoint with the BSDF's two-sidedness looked up once per material.
   ShadePoint shadePointOf(const Hit& hit, const Vec3& dir, int depth, int level, uint64_t seed) const {
-    const bool two = hit.valid() && hit.bsdf >= 0 && twoSided_[static_cast<size_t>(hit.bsdf)];
-    return makeShadePoint(hit, dir, depth, level, seed, two);
+    const bool known = hit.valid() && hit.bsdf >= 0;
+    const bool two = known && twoSided_[static_cast<size_t>(hit.bsdf)];
+    return makeShadePoint(hit, dir, depth, level, seed, two, known ? ctx_.scene.bsdfs[static_cast<size_t>(hit.bsdf)].get() : nullptr);
   }
   // Technique of a point: its material's (irradiance/radiance cache, importance sampling), None
   // for points without indirect light, and importance sampling for cached materials past

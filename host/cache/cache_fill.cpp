@@ -72,7 +72,7 @@ void fillPoints(const RcacheRun& run, const PassPoints& pass, size_t begin, size
         if (!isCached(run.engine.technique(pts[i]))) continue;
         Rng rng(pts[i].seed, kStreamFillDirectLight);
         BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
-        const Bsdf& bsdf = bsdfAt(*run.ctx.scene.bsdfs[pts[i].hit.bsdf], pts[i].hit.uv, pointBsdf);
+        const Bsdf& bsdf = bsdfAt(*run.ctx.scene.bsdfs[pts[i].hit.bsdf], pts[i], pointBsdf);
         const Color d = directLight(run.ctx, pts[i].hit, pts[i].frame, pts[i].wo, bsdf, rng);
         base[i] = luminance(d + prim[i].Le);
       }

@@ -235,7 +235,7 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
         ShadePoint& sp = s.prim[i].sp;
         if (!sp.active || !withinMaxDepth(maxDepth, 2)) continue;
         BsdfPtr& pointBsdf = batch.holders.emplace_back();  // a spatially varying BSDF at this point (Bsdf::at)
-        const Bsdf& bsdf = bsdfAt(*run_.ctx.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf);
+        const Bsdf& bsdf = bsdfAt(*run_.ctx.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf);
         sp.lightSamples = params.lightSamples;
         // Importance-sampled points: the continuation's ray doubles as the BSDF sample
         // (lightStrategyMis); the others take directLightCheapest's estimator.

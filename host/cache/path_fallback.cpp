@@ -58,7 +58,7 @@ FallbackDecision decideFallback(const RcacheRun& run) {
       const Vec2 u = rng.next2D();
       BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
       const std::optional<BsdfSample> bs =
-          bsdfAt(*run.ctx.scene.bsdfs[sp.hit.bsdf], sp.hit.uv, pointBsdf).sample(sp.wo, rng.nextFloat(), u);
+          bsdfAt(*run.ctx.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf).sample(sp.wo, rng.nextFloat(), u);
       if (!bs || !(maxComponent(bs->weight) > 0.0f)) continue;
       const Vec3 dir = sp.frame.toWorld(bs->wi);
       const Hit next = run.ctx.accel.intersect(Accel::spawnRay(sp.hit, dir));

@@ -8,12 +8,16 @@
 #include "core/parallel_array.h"
 #include "core/rng.h"
 #include "geometry/accel.h"
+#include "geometry/shading_frame.h"
 
 namespace rc {
 
 struct ShadePoint {
   Hit hit;
   Frame frame;           // shading frame; for two-sided BSDFs seen from behind, flipped to the viewer
+  // The hit's own frame (flipped with `frame`): records are placed, oriented and looked up in it;
+  // it differs from `frame` where a normal or bump map turns the shading frame.
+  Frame geometryFrame;
   Vec3 wo{0, 0, 1};      // toward the viewer, local frame
   int depth = 1;         // path segments from the camera (camera hit = 1, Mitsuba's depth)
   int level = 0;         // diffuse/glossy vertices before this point
@@ -47,20 +51,30 @@ inline void continueLowDiscrepancy(ShadePoint& sp, const Rng& rng) {
   sp.ldDim = rng.lowDiscrepancyDim();
 }
 
+// The BSDF at a shade point (geometry/shading_frame.h; both of its frames mirrored alike).
+inline const Bsdf& bsdfAt(const Bsdf& material, const ShadePoint& sp, BsdfPtr& holder) {
+  return bsdfAt(material, sp.hit, sp.frame, sp.geometryFrame.n, holder);
+}
+
 // Builds the shade point of a ray's hit (dir = ray direction, world).
+// `material`: the hit's BSDF where it may perturb the frame (normalmap, bumpmap), else null.
 inline ShadePoint makeShadePoint(const Hit& hit, const Vec3& dir, int depth, int level, uint64_t seed,
-                                 bool twoSided) {
+                                 bool twoSided, const Bsdf* material = nullptr) {
   ShadePoint sp;
   sp.hit = hit;
   sp.depth = depth;
   sp.level = level;
   sp.seed = seed;
   if (!hit.valid() || hit.bsdf < 0) return sp;
-  sp.frame = hit.frame();
+  // Records are looked up at the hit's position; the BRDF meets their radiance in this frame.
+  sp.geometryFrame = hit.frame();
+  sp.frame = material ? shadingFrame(*material, hit, -dir) : sp.geometryFrame;
   sp.wo = sp.frame.toLocal(-dir);
   if (sp.wo.z <= 0.0f && twoSided) {
     // Mirror the frame to the viewer's side (still right-handed: t × (−b) = −n).
-    sp.frame = Frame(sp.frame.t, -sp.frame.b, -sp.frame.n);
+    const auto mirror = [](const Frame& f) { return Frame(f.t, -f.b, -f.n); };
+    sp.frame = mirror(sp.frame);
+    sp.geometryFrame = mirror(sp.geometryFrame);
     sp.wo = sp.frame.toLocal(-dir);
   }
   sp.active = true;

@@ -9,6 +9,8 @@
 #include <cstring>
 #include <mutex>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
@@ -91,30 +93,33 @@ RTCRay toEmbree(const Ray& r) {
 // hit: the cross product, normalisation and tangent solve made triangleHit 13 % of a render).
 struct TriangleConstants {
   std::vector<Vec3> faceNormal;  // orientedFaceNormal
-  std::vector<Vec3> dpdu;        // from the uvs, zero when the mesh has none or the map is degenerate
+  std::vector<Vec3> dpdu, dpdv;  // from the uvs, zero when the mesh has none or the map is degenerate
 };
 
-Vec3 triangleDpdu(const Mesh& mesh, const glm::uvec3& tri) {
-  if (mesh.uvs.empty()) return Vec3(0.0f);
+// dp/du and dp/dv of a triangle from its uvs; zero when the mesh has none or the map is degenerate.
+std::pair<Vec3, Vec3> triangleUvPartials(const Mesh& mesh, const glm::uvec3& tri) {
+  const std::pair<Vec3, Vec3> none(Vec3(0.0f), Vec3(0.0f));
+  if (mesh.uvs.empty()) return none;
   const Vec3 &p0 = mesh.positions[tri.x], &p1 = mesh.positions[tri.y], &p2 = mesh.positions[tri.z];
   const Vec2 &t0 = mesh.uvs[tri.x], &t1 = mesh.uvs[tri.y], &t2 = mesh.uvs[tri.z];
   const Vec2 duv02 = t0 - t2, duv12 = t1 - t2;
   const Vec3 dp02 = p0 - p2, dp12 = p1 - p2;
   const float det = duv02.x * duv12.y - duv02.y * duv12.x;
-  if (std::fabs(det) > 1e-12f) {
-    const Vec3 dpdu = (duv12.y * dp02 - duv02.y * dp12) / det;
-    if (std::isfinite(dpdu.x) && std::isfinite(dpdu.y) && std::isfinite(dpdu.z)) return dpdu;
-  }
-  return Vec3(0.0f);
+  if (!(std::fabs(det) > 1e-12f)) return none;
+  const Vec3 dpdu = (duv12.y * dp02 - duv02.y * dp12) / det;
+  const Vec3 dpdv = (duv02.x * dp12 - duv12.x * dp02) / det;
+  const auto finite = [](const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  return finite(dpdu) && finite(dpdv) ? std::make_pair(dpdu, dpdv) : none;
 }
 
 TriangleConstants triangleConstants(const Mesh& mesh) {
   TriangleConstants c;
   c.faceNormal.resize(mesh.triangles.size());
   c.dpdu.resize(mesh.triangles.size());
+  c.dpdv.resize(mesh.triangles.size());
   for (size_t i = 0; i < mesh.triangles.size(); ++i) {
     c.faceNormal[i] = orientedFaceNormal(mesh, i);
-    c.dpdu[i] = triangleDpdu(mesh, mesh.triangles[i]);
+    std::tie(c.dpdu[i], c.dpdv[i]) = triangleUvPartials(mesh, mesh.triangles[i]);
   }
   return c;
 }
@@ -205,7 +210,7 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
     im.sphereData.spheres = &scene.spheres;
     for (const Sphere& s : scene.spheres) {
       const bool known = s.bsdf >= 0 && s.bsdf < static_cast<int>(scene.bsdfs.size()) && scene.bsdfs[s.bsdf];
-      im.sphereUv.push_back(known && (scene.bsdfs[s.bsdf]->tinted() || scene.bsdfs[s.bsdf]->spatiallyVarying()) ? 1 : 0);
+      im.sphereUv.push_back(known && (scene.bsdfs[s.bsdf]->tinted() || scene.bsdfs[s.bsdf]->spatiallyVarying() || scene.bsdfs[s.bsdf]->perturbsFrame()) ? 1 : 0);
     }
     RTCGeometry g = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(g, static_cast<unsigned>(scene.spheres.size()));
@@ -266,6 +271,7 @@ Hit triangleHit(const Mesh& mesh, const TriangleConstants& tc, int meshIndex, un
     const Vec2 &t0 = mesh.uvs[tri.x], &t1 = mesh.uvs[tri.y], &t2 = mesh.uvs[tri.z];
     h.uv = w * t0 + u * t1 + v * t2;
     h.dpdu = tc.dpdu[prim];
+    h.dpdv = tc.dpdv[prim];
   } else {
     h.uv = Vec2(u, v);
   }
@@ -289,6 +295,10 @@ Hit sphereHit(const Sphere& s, int index, const Ray& ray, float t, bool withUv) 
     h.uv = Vec2((phi < 0.0f ? phi + 2.0f * kPi : phi) / (2.0f * kPi), std::acos(glm::clamp(n.z, -1.0f, 1.0f)) / kPi);
   }
   h.dpdu = Vec3(-n.y, n.x, 0.0f) * (2.0f * kPi * s.radius);
+  // dp/dv along θ = πv: πr·(cos θ cos φ, cos θ sin φ, −sin θ); at the poles φ = 0.
+  const float sinTheta = std::sqrt(n.x * n.x + n.y * n.y);
+  h.dpdv = kPi * s.radius *
+           (sinTheta > 0.0f ? Vec3(n.z * n.x / sinTheta, n.z * n.y / sinTheta, -sinTheta) : Vec3(n.z, 0.0f, 0.0f));
   if (s.flipNormals) n = -n;
   h.ng = h.ns = n;
   return h;
@@ -305,6 +315,7 @@ Hit cylinderHit(const Cylinder& c, const Ray& ray, float t) {
                                             glm::length(Vec3(c.toWorld[2])));
   h.ng = h.ns = g.n;
   h.dpdu = g.dpdu;
+  h.dpdv = g.dpdv;
   h.uv = g.uv;
   return h;
 }

@@ -23,6 +23,7 @@ struct Hit {
   Vec3 ng{0, 0, 1};        // geometric normal (unit), as the shape is oriented (not flipped toward ray)
   Vec3 ns{0, 0, 1};        // interpolated shading normal (unit), same side as ng
   Vec3 dpdu{0.0f};         // mesh tangent from uvs when available, else zero
+  Vec3 dpdv{0.0f};         // the partial along v, likewise (a bumpmap's frame reads both)
   Vec2 uv{0.0f};           // surface coordinates; on a sphere only where its material reads them (textured), else 0
   int bsdf = -1;
   int emitter = -1;        // area emitter index or -1

@@ -43,10 +43,10 @@ CylinderHitGeometry cylinderHitGeometry(const Cylinder& c, const Vec3& worldPoin
   g.p = Vec3(c.toWorld * Vec4(local, 1.0f));
   const Mat3 linear(c.toWorld);
   g.dpdu = linear * (2.0f * kPi * Vec3(-local.y, local.x, 0.0f));
-  const Vec3 dpdv = linear * Vec3(0.0f, 0.0f, 1.0f);
+  g.dpdv = linear * Vec3(0.0f, 0.0f, 1.0f);
   // Mitsuba's normal, cross(dp/du, dp/dv): outward for a proper to_world; a mirroring one turns it
   // inward, which the loader compensates through flipNormals as Mitsuba does.
-  g.n = glm::normalize(glm::cross(g.dpdu, dpdv));
+  g.n = glm::normalize(glm::cross(g.dpdu, g.dpdv));
   if (c.flipNormals) g.n = -g.n;
   float phi = std::atan2(local.y, local.x);
   if (phi < 0.0f) phi += 2.0f * kPi;

@@ -18,6 +18,7 @@ struct CylinderHitGeometry {
   Vec3 p{0.0f};     // on the surface (re-projected onto the unit cylinder)
   Vec3 n{0, 0, 1};  // unit, outward unless flipNormals
   Vec3 dpdu{0.0f};  // Mitsuba's: u = φ/2π around the axis, v = height in [0, 1]
+  Vec3 dpdv{0.0f};
   Vec2 uv{0.0f};
 };
 CylinderHitGeometry cylinderHitGeometry(const Cylinder& c, const Vec3& worldPoint);

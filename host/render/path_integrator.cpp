@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/timing.h"
+#include "geometry/shading_frame.h"
 #include "render/camera.h"
 #include "render/direct_light.h"
 #include "render/film.h"
@@ -38,9 +39,10 @@ Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings,
     // Mitsuba: a vertex may extend the path only while the path has fewer than max_depth segments.
     if (maxDepth >= 0 && depth + 1 >= maxDepth) break;
     if (hit.bsdf < 0 || hit.bsdf >= static_cast<int>(scene.bsdfs.size()) || !scene.bsdfs[hit.bsdf]) break;
-    BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
-    const Bsdf& bsdf = bsdfAt(*scene.bsdfs[hit.bsdf], hit.uv, pointBsdf);
-    const Frame frame = hit.frame();
+    // The frame a normal/bump map turns, and the BSDF at this point (Bsdf::at, Bsdf::atFrame).
+    const Frame frame = shadingFrame(*scene.bsdfs[hit.bsdf], hit, -ray.d);
+    BsdfPtr pointBsdf;
+    const Bsdf& bsdf = bsdfAt(*scene.bsdfs[hit.bsdf], hit, frame, hit.ns, pointBsdf);
     const Vec3 wo = frame.toLocal(-ray.d);
     // A textured factor scales everything this vertex reflects (Bsdf::tint), not its emission.
     if (bsdf.tinted()) throughput *= bsdf.tint(hit.uv, wo);

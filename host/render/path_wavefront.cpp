@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "geometry/shading_frame.h"
 #include "render/direct_light.h"
 #include "render/light_sampler.h"
 
@@ -85,9 +86,10 @@ class BounceShader {
     if (settings_.maxDepth >= 0 && depth_ + 1 >= settings_.maxDepth) return;
     const std::vector<BsdfPtr>& bsdfs = ctx_.scene.bsdfs;
     if (hit.bsdf < 0 || hit.bsdf >= static_cast<int>(bsdfs.size()) || !bsdfs[hit.bsdf]) return;
-    BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
-    const Bsdf& bsdf = bsdfAt(*bsdfs[hit.bsdf], hit.uv, pointBsdf);
-    const Frame frame = hit.frame();
+    // The frame a normal/bump map turns, and the BSDF at this point (Bsdf::at, Bsdf::atFrame).
+    const Frame frame = shadingFrame(*bsdfs[hit.bsdf], hit, -ray.d);
+    BsdfPtr pointBsdf;
+    const Bsdf& bsdf = bsdfAt(*bsdfs[hit.bsdf], hit, frame, hit.ns, pointBsdf);
     const Vec3 wo = frame.toLocal(-ray.d);
     // A textured factor scales everything this vertex reflects (Bsdf::tint), not its emission.
     if (bsdf.tinted()) throughput *= bsdf.tint(hit.uv, wo);

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "bsdf/bsdf_factory.h"
+#include "bsdf/plugins.h"
 #include "bsdf/textured.h"
 #include "scene/loader.h"
 
@@ -25,12 +26,12 @@ void Loader::collectBsdfChildren(const std::shared_ptr<XmlFile>& file, const Ele
     if (tag == "bsdf") {
       nested.push_back(buildBsdf(file, child));
     } else if (tag == "texture") {
-      if (std::string(child.attribute("name").value()).empty())
+      if (std::string(child.attribute("name").value()).empty() && e.type != "bumpmap")
         throw LocatedError(whereOf(*file, child) + ": a <texture> inside a <bsdf> needs the parameter's 'name'");
       textures.emplace_back(child, buildTexture(file, child));
     } else if (tag == "ref") {
       const Named& n = resolveRef(file, child);
-      if (n.kind == Kind::Texture && !std::string(child.attribute("name").value()).empty()) {
+      if (n.kind == Kind::Texture && (!std::string(child.attribute("name").value()).empty() || e.type == "bumpmap")) {
         textures.emplace_back(child, n.texture);
         continue;
       }
@@ -67,7 +68,8 @@ void Loader::applyBsdfTextures(const std::shared_ptr<XmlFile>& file, Element& e,
                                const std::vector<std::pair<pugi::xml_node, TexturePtr>>& textures, TexturePtr& factor,
                                BsdfTextures& perPoint) {
   for (const auto& [child, texture] : textures) {
-    const std::string name = child.attribute("name").value();
+    // A bumpmap takes its one texture under any name (Mitsuba 3).
+    const std::string name = e.type == "bumpmap" ? kBumpMapTextureParameter : child.attribute("name").value();
     if (e.props.has(name) || (factor && isBsdfFactorParameter(e.type, name)))
       throw LocatedError(whereOf(*file, child) + ": parameter '" + name + "' is given more than once");
     Property p;

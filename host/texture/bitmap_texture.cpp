@@ -31,6 +31,24 @@ class BitmapTexture final : public Texture {
            ty * ((1.0f - tx) * texel(ix, iy + 1) + tx * texel(ix + 1, iy + 1));
   }
   Color mean() const override { return mean_; }
+  bool hasGradient() const override { return true; }
+  Vec2 gradient1(const Vec2& uvIn) const override {
+    if (filter_ == TextureFilter::Nearest) return Vec2(0.0f);  // zero almost everywhere
+    const Vec2 uv = toUv_.apply(uvIn);
+    if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return Vec2(0.0f);
+    const float fx = uv.x * static_cast<float>(w_) - 0.5f, fy = uv.y * static_cast<float>(h_) - 0.5f;
+    const float x0 = std::floor(fx), y0 = std::floor(fy);
+    const float tx = fx - x0, ty = fy - y0;
+    const long ix = static_cast<long>(x0), iy = static_cast<long>(y0);
+    const float f00 = luminance(texel(ix, iy)), f10 = luminance(texel(ix + 1, iy));
+    const float f01 = luminance(texel(ix, iy + 1)), f11 = luminance(texel(ix + 1, iy + 1));
+    // Partials along the texel axes, then through the transpose of to_uv's linear part and scaled
+    // by the resolution last — the order Mitsuba's eval_1_grad applies them in.
+    const float dx = (1.0f - ty) * (f10 - f00) + ty * (f11 - f01);
+    const float dy = (1.0f - tx) * (f01 - f00) + tx * (f11 - f10);
+    const Mat3& m = toUv_.m;
+    return Vec2((m[0][0] * dx + m[0][1] * dy) * static_cast<float>(w_), (m[1][0] * dx + m[1][1] * dy) * static_cast<float>(h_));
+  }
 
  private:
   // floor as an index, saturated far outside any image so wrapping stays in integer range.

@@ -32,6 +32,10 @@ class Texture {
   virtual Color eval(const Vec2& uv) const = 0;
   // Mean over the unit uv square (what a constant stand-in would be, in lenient mode).
   virtual Color mean() const = 0;
+  // Mitsuba's eval_1_grad: (∂/∂u, ∂/∂v) of the luminance of eval(uv), where hasGradient() (a bitmap:
+  // the derivative of its bilinear interpolation, zero for nearest filtering); a bumpmap needs it.
+  virtual bool hasGradient() const { return false; }
+  virtual Vec2 gradient1(const Vec2& /*uv*/) const { return Vec2(0.0f); }
 };
 
 using TexturePtr = std::shared_ptr<const Texture>;

@@ -1,7 +1,9 @@
 // The BSDFs added for real scenes (roughdielectric, null, mask) and parameters textured per point
 // (Bsdf::at: plastic's diffuse_reflectance, a roughness, a mask's opacity) rendered by both
 // integrators on the box scene's floor: rcache (forced to cache, fallback=false) agrees with the
-// path tracer in the image mean, and its material plan importance-samples those floors.
+// path tracer in the image mean, and its material plan importance-samples those floors (the
+// roughconductor's α reaches 0.05, sharper than the tables over α may go at the order cap;
+// tests/cache/alpha_tables_render_test.cpp has one they cover).
 #include <gtest/gtest.h>
 
 #include "test_scene.h"
