@@ -49,17 +49,17 @@ Emitter skyEmitter(float sunLum) {
 
 TEST(LightSplit, UniformMapIsCachedWholeAndSunIsSplitOff) {
   const std::vector<Color> uniform(static_cast<size_t>(kEnvW) * kEnvH, Color(2.0f));
-  EXPECT_TRUE(std::isinf(environmentSplitThreshold(kEnvW, kEnvH, uniform, Mat3(1.0f), 1.0f / 3.0f)));
+  EXPECT_TRUE(std::isinf(environmentSplitThreshold(kEnvW, kEnvH, uniform, 1.0f / 3.0f)));
   // The sky alone (zenith 1.5× the horizon, dark ground) passes the variance bound whole.
-  EXPECT_TRUE(std::isinf(environmentSplitThreshold(kEnvW, kEnvH, skyTexels(0.0f), Mat3(1.0f), 1.0f / 3.0f)));
+  EXPECT_TRUE(std::isinf(environmentSplitThreshold(kEnvW, kEnvH, skyTexels(0.0f), 1.0f / 3.0f)));
   // With a sun the threshold lies between the sky's brightest texel and the sun.
-  const float tau = environmentSplitThreshold(kEnvW, kEnvH, skyTexels(5000.0f), Mat3(1.0f), 1.0f / 3.0f);
+  const float tau = environmentSplitThreshold(kEnvW, kEnvH, skyTexels(5000.0f), 1.0f / 3.0f);
   const float skyMax = luminance(Color(0.6f, 0.8f, 1.2f)) * 1.5f;
   std::printf("sun map: tau = %g (sky max %g)\n", tau, skyMax);
   EXPECT_GT(tau, skyMax);
   EXPECT_LT(tau, 5000.0f);
   // A smaller κ never raises the threshold.
-  EXPECT_LE(environmentSplitThreshold(kEnvW, kEnvH, skyTexels(5000.0f), Mat3(1.0f), 0.05f), tau);
+  EXPECT_LE(environmentSplitThreshold(kEnvW, kEnvH, skyTexels(5000.0f), 0.05f), tau);
 }
 
 TEST(LightSplit, PartsAddUpToTheEnvmapInEveryDirection) {
