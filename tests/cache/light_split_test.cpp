@@ -15,11 +15,7 @@ namespace {
 
 constexpr int kEnvW = 64, kEnvH = 33;
 
-std::string statText(const RenderStats& st, const std::string& key) {
-  for (const auto& [k, v] : st.texts)
-    if (k == key) return v;
-  return "";
-}
+using test::statText;
 
 // A sky: luminance rising toward the zenith, dark ground below the horizon, optionally a sun
 // (a 2×2-texel block `sunLum` bright, 30° above the horizon).
@@ -126,21 +122,8 @@ Scene skyScene(int res) {
   return s;
 }
 
-struct BlockStats {
-  std::vector<double> mean;  // per block, per channel: 3 values each
-};
-BlockStats blockMeans(const Image& img, int block) {
-  BlockStats b;
-  for (int by = 0; by < img.height / block; ++by)
-    for (int bx = 0; bx < img.width / block; ++bx) {
-      double m[3] = {};
-      for (int y = by * block; y < (by + 1) * block; ++y)
-        for (int x = bx * block; x < (bx + 1) * block; ++x)
-          for (int c = 0; c < 3; ++c) m[c] += img.pixels[static_cast<size_t>(y) * img.width + x][c];
-      for (double v : m) b.mean.push_back(v / (block * block));
-    }
-  return b;
-}
+using test::BlockStats;
+using test::blockMeans;
 
 TEST(LightSplit, CachedEnvironmentAgreesWithPathTracerPerBlock) {
   const Scene s = skyScene(48);

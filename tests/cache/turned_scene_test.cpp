@@ -59,35 +59,18 @@ Scene loadTurned(const test::TempDir& dir, const std::string& scene, const std::
   return loadScene(dir.write("turned_" + scene, xml.str()), opt);
 }
 
-std::vector<double> blockMeans(const Image& img) {
-  std::vector<double> out;
-  for (int by = 0; by < img.height / kBlock; ++by)
-    for (int bx = 0; bx < img.width / kBlock; ++bx) {
-      double m[3] = {};
-      for (int y = by * kBlock; y < (by + 1) * kBlock; ++y)
-        for (int x = bx * kBlock; x < (bx + 1) * kBlock; ++x)
-          for (int c = 0; c < 3; ++c) m[c] += img.pixels[static_cast<size_t>(y) * img.width + x][c];
-      for (double v : m) out.push_back(v / (kBlock * kBlock));
-    }
-  return out;
-}
-
 // Worst block/channel |a − b| over the tolerance 4 % of the reference's block mean + 0.01: two
 // 512-spp path-traced images of this scene with different seeds differ by far less per 16-px block
 // (the reference noise), a cache's record noise is correlated over a block and takes the rest
 // (the same tolerance as the light split's per-block tests, for the same reason).
 double worstBlockRatio(const Image& a, const Image& ref) {
-  const std::vector<double> x = blockMeans(a), r = blockMeans(ref);
+  const std::vector<double> x = test::blockMeans(a, kBlock).mean, r = test::blockMeans(ref, kBlock).mean;
   double worst = 0.0;
   for (size_t i = 0; i < r.size(); ++i) worst = std::max(worst, std::fabs(x[i] - r[i]) / (0.04 * r[i] + 0.01));
   return worst;
 }
 
-std::string statText(const RenderStats& st, const std::string& key) {
-  for (const auto& [k, v] : st.texts)
-    if (k == key) return v;
-  return "";
-}
+using test::statText;
 
 struct Turn {
   const char* name;
