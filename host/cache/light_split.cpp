@@ -19,13 +19,13 @@ Color cachedTexel(const Color& t, float tau) {
   return l > tau ? t * (tau / l) : t;
 }
 
-// Texel centre directions (Mitsuba's lat-long: u = (x+½)/W, v = y/(H−1)) and the solid angle of
-// each texel's cell (its row's θ band, clipped at the poles, times 2π/W).
+// Texel centre directions in the map's own frame (Mitsuba's lat-long: u = (x+½)/W, v = y/(H−1))
+// and the solid angle of each texel's cell (its row's θ band, clipped at the poles, times 2π/W).
 struct TexelGeometry {
   std::vector<Vec3> dir;
   std::vector<double> solidAngle;
 };
-TexelGeometry texelGeometry(int W, int H, const Mat3& toWorld) {
+TexelGeometry texelGeometry(int W, int H) {
   TexelGeometry g;
   g.dir.resize(static_cast<size_t>(W) * H);
   g.solidAngle.resize(g.dir.size());
@@ -35,7 +35,7 @@ TexelGeometry texelGeometry(int W, int H, const Mat3& toWorld) {
     const double omega = 2.0 * kPiD / W * (std::cos(a) - std::cos(b));
     for (int x = 0; x < W; ++x) {
       const size_t i = static_cast<size_t>(y) * W + x;
-      g.dir[i] = glm::normalize(toWorld * envDirection((x + 0.5f) / W, static_cast<float>(y) / (H - 1)));
+      g.dir[i] = envDirection((x + 0.5f) / W, static_cast<float>(y) / (H - 1));
       g.solidAngle[i] = omega;
     }
   }
@@ -44,10 +44,9 @@ TexelGeometry texelGeometry(int W, int H, const Mat3& toWorld) {
 
 }  // namespace
 
-float environmentSplitThreshold(int W, int H, const std::vector<Color>& texels, const Mat3& toWorld,
-                                float maxRelativeVariance) {
+float environmentSplitThreshold(int W, int H, const std::vector<Color>& texels, float maxRelativeVariance) {
   if (W < 2 || H < 3 || texels.size() != static_cast<size_t>(W) * H) return INFINITY;
-  const TexelGeometry g = texelGeometry(W, H, toWorld);
+  const TexelGeometry g = texelGeometry(W, H);
   const size_t n = texels.size();
   std::vector<float> lum(n);
   float lo = INFINITY, hi = 0.0f;
@@ -118,14 +117,14 @@ LightSplit::LightSplit(const Scene& scene, bool environment, float maxRelativeVa
     std::vector<Color> scaled(e.envPixels.size());
     for (size_t i = 0; i < scaled.size(); ++i) scaled[i] = e.envPixels[i] * e.scale;
     const Mat3 toWorld(e.toWorld);
-    const float tau = environmentSplitThreshold(W, H, scaled, toWorld, maxRelativeVariance);
+    const float tau = environmentSplitThreshold(W, H, scaled, maxRelativeVariance);
     std::vector<Color> cachedTexels(scaled.size()), residual(scaled.size());
     for (size_t i = 0; i < scaled.size(); ++i) {
       cachedTexels[i] = cachedTexel(scaled[i], tau);
       residual[i] = scaled[i] - cachedTexels[i];
     }
     if (W >= 2 && H >= 3) {
-      const TexelGeometry g = texelGeometry(W, H, toWorld);
+      const TexelGeometry g = texelGeometry(W, H);
       for (size_t i = 0; i < scaled.size(); ++i) {
         cachedPower += g.solidAngle[i] * std::max(0.0f, luminance(cachedTexels[i]));
         totalPower += g.solidAngle[i] * std::max(0.0f, luminance(scaled[i]));

@@ -21,8 +21,9 @@
 // Choice of τ (per envmap, from its histogram over solid angle): a record estimates its incoming
 // radiance from M×N uniform hemisphere rays (course notes, "Incoming Radiance Computation"), so
 // what it gets wrong is the variance of the cached radiance over its hemisphere. τ is the largest
-// threshold at which, for each of the six axis-aligned hemispheres, that variance stays ≤ κ times
-// the square of the brightest hemisphere's mean (κ = env_variance, default 1/3: the relative
+// threshold at which, for each of the six hemispheres around the map's own axes (not the world's,
+// so that the split does not change when the whole scene is turned), that variance stays ≤ κ
+// times the square of the brightest hemisphere's mean (κ = env_variance, default 1/3: the relative
 // variance that the cosine weight of a diffuse record already has under a uniform sky,
 // E[cos²]/E[cos]² − 1 over the uniform hemisphere). Dark hemispheres (ground below a sky) thus
 // do not veto the split, and a uniform sky is cached whole. Maps smaller than 2×3 texels have no
@@ -76,9 +77,9 @@ class LightSplit {
   std::unique_ptr<LightSampler> residualLights_;
 };
 
-// τ for one lat-long map (texels row-major, top row first, already scaled; world frame toWorld):
-// see the file comment. +inf when the whole map passes.
-float environmentSplitThreshold(int width, int height, const std::vector<Color>& texels, const Mat3& toWorld,
-                                float maxRelativeVariance);
+// τ for one lat-long map (texels row-major, top row first, already scaled): see the file comment.
+// +inf when the whole map passes. The hemispheres are the map's own (its to_world left out): a
+// scene turned as a whole, envmap included, keeps its split, which world axes would not.
+float environmentSplitThreshold(int width, int height, const std::vector<Color>& texels, float maxRelativeVariance);
 
 }  // namespace rc

@@ -15,11 +15,7 @@ namespace {
 
 constexpr int kEnvW = 64, kEnvH = 33;
 
-std::string statText(const RenderStats& st, const std::string& key) {
-  for (const auto& [k, v] : st.texts)
-    if (k == key) return v;
-  return "";
-}
+using test::statText;
 
 // A sky: luminance rising toward the zenith, dark ground below the horizon, optionally a sun
 // (a 2×2-texel block `sunLum` bright, 30° above the horizon).
@@ -49,17 +45,17 @@ Emitter skyEmitter(float sunLum) {
 
 TEST(LightSplit, UniformMapIsCachedWholeAndSunIsSplitOff) {
   const std::vector<Color> uniform(static_cast<size_t>(kEnvW) * kEnvH, Color(2.0f));
-  EXPECT_TRUE(std::isinf(environmentSplitThreshold(kEnvW, kEnvH, uniform, Mat3(1.0f), 1.0f / 3.0f)));
+  EXPECT_TRUE(std::isinf(environmentSplitThreshold(kEnvW, kEnvH, uniform, 1.0f / 3.0f)));
   // The sky alone (zenith 1.5× the horizon, dark ground) passes the variance bound whole.
-  EXPECT_TRUE(std::isinf(environmentSplitThreshold(kEnvW, kEnvH, skyTexels(0.0f), Mat3(1.0f), 1.0f / 3.0f)));
+  EXPECT_TRUE(std::isinf(environmentSplitThreshold(kEnvW, kEnvH, skyTexels(0.0f), 1.0f / 3.0f)));
   // With a sun the threshold lies between the sky's brightest texel and the sun.
-  const float tau = environmentSplitThreshold(kEnvW, kEnvH, skyTexels(5000.0f), Mat3(1.0f), 1.0f / 3.0f);
+  const float tau = environmentSplitThreshold(kEnvW, kEnvH, skyTexels(5000.0f), 1.0f / 3.0f);
   const float skyMax = luminance(Color(0.6f, 0.8f, 1.2f)) * 1.5f;
   std::printf("sun map: tau = %g (sky max %g)\n", tau, skyMax);
   EXPECT_GT(tau, skyMax);
   EXPECT_LT(tau, 5000.0f);
   // A smaller κ never raises the threshold.
-  EXPECT_LE(environmentSplitThreshold(kEnvW, kEnvH, skyTexels(5000.0f), Mat3(1.0f), 0.05f), tau);
+  EXPECT_LE(environmentSplitThreshold(kEnvW, kEnvH, skyTexels(5000.0f), 0.05f), tau);
 }
 
 TEST(LightSplit, PartsAddUpToTheEnvmapInEveryDirection) {
@@ -126,21 +122,8 @@ Scene skyScene(int res) {
   return s;
 }
 
-struct BlockStats {
-  std::vector<double> mean;  // per block, per channel: 3 values each
-};
-BlockStats blockMeans(const Image& img, int block) {
-  BlockStats b;
-  for (int by = 0; by < img.height / block; ++by)
-    for (int bx = 0; bx < img.width / block; ++bx) {
-      double m[3] = {};
-      for (int y = by * block; y < (by + 1) * block; ++y)
-        for (int x = bx * block; x < (bx + 1) * block; ++x)
-          for (int c = 0; c < 3; ++c) m[c] += img.pixels[static_cast<size_t>(y) * img.width + x][c];
-      for (double v : m) b.mean.push_back(v / (block * block));
-    }
-  return b;
-}
+using test::BlockStats;
+using test::blockMeans;
 
 TEST(LightSplit, CachedEnvironmentAgreesWithPathTracerPerBlock) {
   const Scene s = skyScene(48);
