@@ -126,22 +126,6 @@ Scene skyScene(int res) {
   return s;
 }
 
-struct BlockStats {
-  std::vector<double> mean;  // per block, per channel: 3 values each
-};
-BlockStats blockMeans(const Image& img, int block) {
-  BlockStats b;
-  for (int by = 0; by < img.height / block; ++by)
-    for (int bx = 0; bx < img.width / block; ++bx) {
-      double m[3] = {};
-      for (int y = by * block; y < (by + 1) * block; ++y)
-        for (int x = bx * block; x < (bx + 1) * block; ++x)
-          for (int c = 0; c < 3; ++c) m[c] += img.pixels[static_cast<size_t>(y) * img.width + x][c];
-      for (double v : m) b.mean.push_back(v / (block * block));
-    }
-  return b;
-}
-
 TEST(LightSplit, CachedEnvironmentAgreesWithPathTracerPerBlock) {
   const Scene s = skyScene(48);
   const auto ref = test::renderScene(s, test::pathSettings(s), 512, 11);
@@ -151,7 +135,8 @@ TEST(LightSplit, CachedEnvironmentAgreesWithPathTracerPerBlock) {
   EXPECT_GT(cached.stats.get("env_cached_fraction"), 0.1);
   EXPECT_GT(cached.stats.get("env_sampled_fraction"), 0.1);
   EXPECT_EQ(statText(sampled.stats, "env_cache"), "off (disabled)");
-  const BlockStats r = blockMeans(ref.image, 16), a = blockMeans(cached.image, 16), b = blockMeans(sampled.image, 16);
+  const test::BlockStats r = test::blockMeans(ref.image, 16), a = test::blockMeans(cached.image, 16),
+                        b = test::blockMeans(sampled.image, 16);
   // Tolerance: 4 % of the block mean + 0.01 per channel. Half of it is the reference's own noise:
   // two 512-spp references with different seeds differ by up to 2.0 % in their worst block and
   // channel (measured). The other half is the cache's record noise, correlated over a block rather
@@ -184,7 +169,7 @@ TEST(LightSplit, CachedLargeAreaLightAgreesWithPathTracerPerBlock) {
   const auto cached = test::renderScene(s, test::rcacheSettings(s, {{"area_cache", "true"}}), 16, 3);
   EXPECT_EQ(statText(cached.stats, "area_cache"), "area emitters cached");
   EXPECT_EQ(statText(cached.stats, "env_cache"), "off (no environment emitter)");
-  const BlockStats r = blockMeans(ref.image, 16), a = blockMeans(cached.image, 16);
+  const test::BlockStats r = test::blockMeans(ref.image, 16), a = test::blockMeans(cached.image, 16);
   double worst = 0.0;
   for (size_t i = 0; i < r.mean.size(); ++i)
     worst = std::max(worst, std::fabs(a.mean[i] - r.mean[i]) / (0.04 * r.mean[i] + 0.01));

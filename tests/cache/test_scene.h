@@ -4,6 +4,7 @@
 // coloured diffuse walls, a square area light under the ceiling, camera looking in.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "bsdf/bsdf_factory.h"
 #include "cache/rcache_integrator.h"
@@ -117,6 +118,23 @@ inline RenderResult renderScene(const Scene& scene, const IntegratorSettings& se
   RenderResult r;
   r.image = integ->render(ctx, r.stats);
   return r;
+}
+
+// Block means of an image (16-px blocks for the per-block bias checks against the path tracer).
+struct BlockStats {
+  std::vector<double> mean;  // per block, per channel: 3 values each
+};
+inline BlockStats blockMeans(const Image& img, int block) {
+  BlockStats b;
+  for (int by = 0; by < img.height / block; ++by)
+    for (int bx = 0; bx < img.width / block; ++bx) {
+      double m[3] = {};
+      for (int y = by * block; y < (by + 1) * block; ++y)
+        for (int x = bx * block; x < (bx + 1) * block; ++x)
+          for (int c = 0; c < 3; ++c) m[c] += img.pixels[static_cast<size_t>(y) * img.width + x][c];
+      for (double v : m) b.mean.push_back(v / (block * block));
+    }
+  return b;
 }
 
 inline IntegratorSettings rcacheSettings(const Scene& s, std::map<std::string, std::string> params = {}) {
