@@ -7,7 +7,7 @@ namespace rc {
 
 namespace {
 
-double budgetGrowth(int spp) { return std::max(1.0, double(spp) / kBudgetBaseSpp); }
+double budgetGrowth(int spp) { return double(std::clamp(spp, kBudgetBaseSpp, kBudgetMaxSpp)) / kBudgetBaseSpp; }
 
 }  // namespace
 

@@ -10,8 +10,9 @@
 // Defaults come from the literature, not from the shipped scenes; measurements behind them are in
 // bench/RESULTS.md.
 // The values marked † are those for up to 16 spp: unless given, they follow the sample budget
-// above it (cache/budget_params.h) — rays ×√(spp/16) (at most 8192), a, rmin, rmax ×(spp/16)^(-1/4) —
-// so the records' noise and interpolation error fall with the spp instead of flooring the error.
+// above it (cache/budget_params.h) — rays ×√(spp/16) (at most 8192), a, rmin, rmax
+// ×(spp/16)^(-1/4), spp counted up to 4096 — so the records' noise and interpolation error fall
+// with the spp instead of flooring the error.
 // A given value is used as given at every spp.
 //   a            0.4 †  accuracy of primary-hit caches (Ward's a; Křivánek 2005 uses 0.1–0.5)
 //   rays         512 †  hemisphere rays per record (M×N, N = 4M; the course notes use 500–8000;

@@ -21,6 +21,7 @@ TEST(BudgetParams, RaysGrowAsRootOfSppAboveTheBase) {
   EXPECT_EQ(budgetRays(512, 4 * kBudgetBaseSpp), 1024);
   EXPECT_EQ(budgetRays(256, 16 * kBudgetBaseSpp), 1024);
   EXPECT_EQ(budgetRays(512, 1 << 20), kBudgetMaxRays);
+  EXPECT_EQ(budgetRays(256, 1 << 20), budgetRays(256, kBudgetMaxSpp));  // 4096: no growth beyond
   EXPECT_EQ(budgetRays(20000, 1 << 20), 20000);  // a base above the cap is not lowered
 }
 
@@ -28,6 +29,8 @@ TEST(BudgetParams, RadiiShrinkAsTheFourthRootOfSpp) {
   EXPECT_FLOAT_EQ(budgetRadiusScale(1), 1.0f);
   EXPECT_FLOAT_EQ(budgetRadiusScale(kBudgetBaseSpp), 1.0f);
   EXPECT_NEAR(budgetRadiusScale(16 * kBudgetBaseSpp), 0.5f, 1e-6f);
+  EXPECT_NEAR(budgetRadiusScale(kBudgetMaxSpp), 0.25f, 1e-6f);
+  EXPECT_EQ(budgetRadiusScale(1 << 20), budgetRadiusScale(kBudgetMaxSpp));  // bounded record count
 }
 
 TEST(BudgetParams, OnlyAutomaticCountsFollowTheBudget) {
