@@ -2,26 +2,52 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "core/error.h"
 
 namespace rc {
 
+namespace {
+
+// A record ray count: 0 (the default) leaves `rays` at its base, to follow the sample budget
+// (cache/budget_params.h); an explicit count of 8 or more is used as given.
+void readRayCount(ParamReader& in, const char* name, int& rays, bool& followsBudget) {
+  const int value = in.integer(name, 0, 0, 65536);
+  if (value == 0) return;
+  if (value < 8)
+    throw Error(std::string("parameter '") + name + "' = '" + std::to_string(value) +
+                "': must be 0 (automatic: follows the sample budget) or 8..65536");
+  rays = value;
+  followsBudget = false;
+}
+
+// A real that follows the budget unless given (the fallback below any valid value marks "not
+// given": ParamReader range-checks only given values).
+void readFollowing(ParamReader& in, const char* name, float lo, float hi, float& value, bool& followsBudget) {
+  const float given = in.real(name, lo - 1.0f, lo, hi);
+  if (given < lo) return;
+  value = given;
+  followsBudget = false;
+}
+
+}  // namespace
+
 RcacheParams readRcacheParams(ParamReader& in) {
   RcacheParams p;
-  p.a = in.real("a", p.a, 1e-3f, 10.0f);
-  p.rays = in.integer("rays", p.rays, 8, 65536);
+  readFollowing(in, "a", 1e-3f, 10.0f, p.a, p.follow.a);
+  readRayCount(in, "rays", p.rays, p.follow.rays);
   p.order = in.integer("order", p.order, 0, 16);
   p.weber = in.real("weber", p.weber, 1e-4f, 10.0f);
   p.adaptive = in.flag("adaptive", p.adaptive);
   p.minAScale = in.real("min_a_scale", p.minAScale, 1e-3f, 1.0f);
   p.gradients = in.flag("gradients", p.gradients);
-  p.rMinPx = in.real("rmin", p.rMinPx, 0.01f, 1e6f);
-  p.rMaxPx = in.real("rmax", p.rMaxPx, 0.01f, 1e9f);
+  readFollowing(in, "rmin", 0.01f, 1e6f, p.rMinPx, p.follow.rMin);
+  readFollowing(in, "rmax", 0.01f, 1e9f, p.rMaxPx, p.follow.rMax);
   // Checked right after rmax is read, so a file's error names rmax's line.
   if (p.rMinPx > p.rMaxPx) throw Error("rcache parameters: rmin must not exceed rmax");
   p.secondaryAScale = in.real("secondary_a_scale", p.secondaryAScale, 1.0f, 100.0f);
-  p.secondaryRays = in.integer("secondary_rays", p.secondaryRays, 8, 65536);
+  readRayCount(in, "secondary_rays", p.secondaryRays, p.follow.secondaryRays);
   p.secondaryOrder = in.integer("secondary_order", p.secondaryOrder, 0, 16);
   p.cacheDepth = in.integer("cache_depth", p.cacheDepth, 1, 8);
   p.batch = in.integer("batch", p.batch, 1, 1 << 16);

@@ -30,6 +30,11 @@ struct RcacheParams {
   bool areaCache = false;
   bool fallback = true;
   float fallbackShare = 0.25f;
+  // Which of the values above are the defaults for the base budget, to be set for the render's
+  // spp (cache/budget_params.h); one given on the command line or in the file is used as given.
+  struct FollowBudget {
+    bool rays = true, secondaryRays = true, a = true, rMin = true, rMax = true;
+  } follow;
 };
 
 // Throws rc::Error("parameter 'x' = '...': ...") for a malformed or out-of-range value.

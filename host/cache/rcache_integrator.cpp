@@ -5,6 +5,7 @@
 
 #include "brdf/material_plan.h"
 #include "cache/adaptive_rounds.h"
+#include "cache/budget_params.h"
 #include "cache/cache_engine.h"
 #include "cache/cache_file.h"
 #include "cache/cache_fill.h"
@@ -79,7 +80,8 @@ class RcachePasses final : public PassRender {
  private:
   const RenderContext& ctx_;
   const IntegratorSettings& settings_;
-  const RcacheParams& params_;
+  const int spp_;
+  const RcacheParams params_;  // the integrator's, with the ray counts set for this render's budget
   const CacheFiles files_;
   const SteadyClock::time_point start_ = SteadyClock::now();
   const RcacheAovs aovs_;
@@ -87,7 +89,6 @@ class RcachePasses final : public PassRender {
   ShBackend& backend_;
   BrdfTableSet tables_;
   double tablesS_ = 0.0;
-  int spp_ = 0;
   CameraModel camera_;
   std::unique_ptr<CacheEngine> engine_;
   std::unique_ptr<PrimaryHits> primaries_;
@@ -104,7 +105,8 @@ class RcachePasses final : public PassRender {
 
 RcachePasses::RcachePasses(const RenderContext& ctx, const IntegratorSettings& settings, const RcacheParams& params,
                            ShBackend* backend, const CacheFiles& files, RenderStats& stats)
-    : ctx_(ctx), settings_(settings), params_(params), files_(files), aovs_(parseRcacheAovs(ctx.options.aovs)),
+    : ctx_(ctx), settings_(settings), spp_(ctx.options.spp > 0 ? ctx.options.spp : ctx.scene.sampleCount),
+      params_(paramsForBudget(params, spp_)), files_(files), aovs_(parseRcacheAovs(ctx.options.aovs)),
       ownBackend_(backend ? nullptr : makeScalarBackend()), backend_(backend ? *backend : *ownBackend_),
       camera_(ctx.scene.camera, ctx.scene.film) {
   const Scene& scene = ctx.scene;
@@ -112,7 +114,6 @@ RcachePasses::RcachePasses(const RenderContext& ctx, const IntegratorSettings& s
   tablesS_ = secondsSince(start_);
 
   const Film film(scene.film);
-  spp_ = ctx.options.spp > 0 ? ctx.options.spp : scene.sampleCount;
   // Before the fill, not after it (final_pass_memory.h).
   checkFinalPassMemory(film.width(), spp_);
   Vec3 lo, hi;

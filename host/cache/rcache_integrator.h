@@ -9,8 +9,14 @@
 // their ranges; max_depth, rr_depth, hide_emitters as for path, scene/integrator_params.h).
 // Defaults come from the literature, not from the shipped scenes; measurements behind them are in
 // bench/RESULTS.md.
-//   a            0.4    accuracy of primary-hit caches (Ward's a; Křivánek 2005 uses 0.1–0.5)
-//   rays         512    hemisphere rays per record (M×N, N = 4M; the course notes use 500–8000)
+// The values marked † are those for up to 16 spp: unless given, they follow the sample budget
+// above it (cache/budget_params.h) — rays ×√(spp/16) (at most 8192), a, rmin, rmax
+// ×(spp/16)^(-1/4), spp counted up to 4096 — so the records' noise and interpolation error fall
+// with the spp instead of flooring the error.
+// A given value is used as given at every spp.
+//   a            0.4 †  accuracy of primary-hit caches (Ward's a; Křivánek 2005 uses 0.1–0.5)
+//   rays         512 †  hemisphere rays per record (M×N, N = 4M; the course notes use 500–8000;
+//                       0 = the default, following the budget)
 //   order        0      SH order of glossy records (0 = the per-material order the BRDF plan chose)
 //   weber        0.025  adaptive caching threshold: relative luminance difference (Weber law, 2–3 %)
 //   adaptive     false  shrink a_i where overlapping records disagree (EGSR 2006). Off by default:
@@ -19,13 +25,13 @@
 //                       error at equal time (bench/RESULTS.md "Defaults")
 //   min_a_scale  0.125  adaptive caching never shrinks a_i below a·min_a_scale
 //   gradients    true   translational gradients in records and interpolation
-//   rmin, rmax   1.5, 10  bounds of a record's influence radius a·R_i, in pixel footprints at the
+//   rmin, rmax   1.5, 10 †  bounds of a record's influence radius a·R_i, in pixel footprints at the
 //                       record (secondary caches: × secondary_a_scale^level). Tabellion–Lamorlette
 //                       clamp R_i to [3, 20] px under a weight whose influence radius is R_i/2,
 //                       i.e. [1.5, 10] px of influence; [3, 20] applied to R_i under Ward's weight
 //                       (influence a·R_i) would let records shrink to 0.9 px at a = 0.3
 //   secondary_a_scale 2 a at secondary hits = a·2^level (coarser caches at deeper bounces)
-//   secondary_rays  256 rays per record at secondary levels (level ≥ 1)
+//   secondary_rays  256 † rays per record at secondary levels (level ≥ 1; 0 = the default)
 //   secondary_order 8   SH order cap of glossy records at secondary levels (0 = none): 256 rays
 //                       estimate 144 order-12 coefficients poorly, and an order-12 rotation per
 //                       secondary lookup would dominate the fill, for no visible gain at a bounce

@@ -102,6 +102,12 @@ void reportModes(const RcacheRun& run, RenderStats& stats) {
   stats.set("lookups_record_frame", double(es.recordFrameLookups.load()));
   stats.set("lookups_relaxed", double(es.relaxedLookups.load()));
   stats.set("lookups_lambertian", double(es.lambertianLookups.load()));
+  // The record settings this render used (cache/budget_params.h: they follow the spp).
+  stats.set("record_rays", double(p.rays));
+  stats.set("secondary_record_rays", double(p.secondaryRays));
+  stats.set("record_a", p.a);
+  stats.set("record_rmin", p.rMinPx);
+  stats.set("record_rmax", p.rMaxPx);
   stats.setText("mode", p.tlMode ? "tl (Tabellion-Lamorlette dominant direction)" : "radiance");
   stats.setJson("materials", run.tables.materialsJson());
   // The light split (cache/light_split.h): τ and the power fractions on each side.

@@ -134,7 +134,8 @@ TEST(LightSplit, CachedEnvironmentAgreesWithPathTracerPerBlock) {
   EXPECT_GT(cached.stats.get("env_cached_fraction"), 0.1);
   EXPECT_GT(cached.stats.get("env_sampled_fraction"), 0.1);
   EXPECT_EQ(statText(sampled.stats, "env_cache"), "off (disabled)");
-  const BlockStats r = blockMeans(ref.image, 16), a = blockMeans(cached.image, 16), b = blockMeans(sampled.image, 16);
+  const test::BlockStats r = test::blockMeans(ref.image, 16), a = test::blockMeans(cached.image, 16),
+                        b = test::blockMeans(sampled.image, 16);
   // Tolerance: 4 % of the block mean + 0.01 per channel. Half of it is the reference's own noise:
   // two 512-spp references with different seeds differ by up to 2.0 % in their worst block and
   // channel (measured). The other half is the cache's record noise, correlated over a block rather
@@ -167,7 +168,7 @@ TEST(LightSplit, CachedLargeAreaLightAgreesWithPathTracerPerBlock) {
   const auto cached = test::renderScene(s, test::rcacheSettings(s, {{"area_cache", "true"}}), 16, 3);
   EXPECT_EQ(statText(cached.stats, "area_cache"), "area emitters cached");
   EXPECT_EQ(statText(cached.stats, "env_cache"), "off (no environment emitter)");
-  const BlockStats r = blockMeans(ref.image, 16), a = blockMeans(cached.image, 16);
+  const test::BlockStats r = test::blockMeans(ref.image, 16), a = test::blockMeans(cached.image, 16);
   double worst = 0.0;
   for (size_t i = 0; i < r.mean.size(); ++i)
     worst = std::max(worst, std::fabs(a.mean[i] - r.mean[i]) / (0.04 * r.mean[i] + 0.01));

@@ -120,6 +120,23 @@ inline RenderResult renderScene(const Scene& scene, const IntegratorSettings& se
   return r;
 }
 
+// Block means of an image (16-px blocks for the per-block bias checks against the path tracer).
+struct BlockStats {
+  std::vector<double> mean;  // per block, per channel: 3 values each
+};
+inline BlockStats blockMeans(const Image& img, int block) {
+  BlockStats b;
+  for (int by = 0; by < img.height / block; ++by)
+    for (int bx = 0; bx < img.width / block; ++bx) {
+      double m[3] = {};
+      for (int y = by * block; y < (by + 1) * block; ++y)
+        for (int x = bx * block; x < (bx + 1) * block; ++x)
+          for (int c = 0; c < 3; ++c) m[c] += img.pixels[static_cast<size_t>(y) * img.width + x][c];
+      for (double v : m) b.mean.push_back(v / (block * block));
+    }
+  return b;
+}
+
 inline IntegratorSettings rcacheSettings(const Scene& s, std::map<std::string, std::string> params = {}) {
   IntegratorSettings is = s.integrator;
   is.type = "rcache";
@@ -137,23 +154,6 @@ inline std::string statText(const RenderStats& st, const std::string& key) {
   for (const auto& [k, v] : st.texts)
     if (k == key) return v;
   return "";
-}
-
-// Per-16-px-block (or any `block`) means of an image, for block-wise agreement checks.
-struct BlockStats {
-  std::vector<double> mean;  // per block, per channel: 3 values each
-};
-inline BlockStats blockMeans(const Image& img, int block) {
-  BlockStats b;
-  for (int by = 0; by < img.height / block; ++by)
-    for (int bx = 0; bx < img.width / block; ++bx) {
-      double m[3] = {};
-      for (int y = by * block; y < (by + 1) * block; ++y)
-        for (int x = bx * block; x < (bx + 1) * block; ++x)
-          for (int c = 0; c < 3; ++c) m[c] += img.pixels[static_cast<size_t>(y) * img.width + x][c];
-      for (double v : m) b.mean.push_back(v / (block * block));
-    }
-  return b;
 }
 
 }  // namespace rc::test
