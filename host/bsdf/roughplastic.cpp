@@ -19,8 +19,11 @@
 // Mitsuba does (Gauss–Legendre quadrature over visible normals, see microfacet.h).
 // Sampling: specular lobe with probability ∝ (1 − T(θo))·w_s, diffuse ∝ T(θo)·(1 − w_s),
 // w_s = mean(s)/(mean(ρ) + mean(s)); the returned pdf is the mixture, weight = eval/pdf.
+// Layers (Bsdf::baseLayer/coatLayer): the coat is the first term, sampled by its microfacet
+// distribution alone; the base the second, cosine-sampled.
 #include <array>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <tuple>
 
@@ -69,6 +72,25 @@ std::shared_ptr<const InterfaceTables> interfaceTables(const Microfacet& distr, 
   return cache.emplace(key, tables).first->second;
 }
 
+class RoughPlasticBsdf;
+
+// One term of the roughplastic sum as a BSDF of its own (Bsdf::baseLayer/coatLayer).
+class RoughPlasticLayer final : public Bsdf {
+ public:
+  RoughPlasticLayer(const RoughPlasticBsdf& whole, bool coat) : whole_(whole), coat_(coat) {}
+  Color eval(const Vec3& wo, const Vec3& wi) const override;
+  float pdf(const Vec3& wo, const Vec3& wi) const override;
+  std::optional<BsdfSample> sample(const Vec3& wo, float u1, const Vec2& u2) const override;
+  uint32_t lobes() const override { return coat_ ? kLobeGlossy : kLobeDiffuse; }
+  float glossyAlpha() const override;
+  std::string parameterKey() const override;
+  std::string typeName() const override { return coat_ ? "roughplastic coat" : "roughplastic base"; }
+
+ private:
+  const RoughPlasticBsdf& whole_;
+  bool coat_;
+};
+
 class RoughPlasticBsdf final : public Bsdf {
  public:
   RoughPlasticBsdf(const Microfacet& distr, const Color& diffuse, const Color& specular, float eta, bool nonlinear)
@@ -80,6 +102,8 @@ class RoughPlasticBsdf final : public Bsdf {
     internalReflectance_ = tables_->internalReflectance;
     const Color denom = nonlinear ? Color(1.0f) - diffuse * internalReflectance_ : Color(1.0f - internalReflectance_);
     diffuseScaled_ = diffuse / denom;
+    base_ = std::make_unique<RoughPlasticLayer>(*this, false);
+    coat_ = std::make_unique<RoughPlasticLayer>(*this, true);
   }
 
   float externalTransmittance(float cosTheta) const {
@@ -94,32 +118,39 @@ class RoughPlasticBsdf final : public Bsdf {
 
   Color eval(const Vec3& wo, const Vec3& wi) const override {
     if (!(wo.z > 0.0f && wi.z > 0.0f)) return Color(0.0f);
+    return evalCoat(wo, wi) + evalBase(wo, wi);
+  }
+  // The two terms of eval, for wo.z > 0 and wi.z > 0.
+  Color evalCoat(const Vec3& wo, const Vec3& wi) const {
     const Vec3 h = glm::normalize(wo + wi);
     const float d = distr_.D(h);
     const float f = fresnelDielectric(glm::dot(wo, h), eta_).r;
     const float g = distr_.G(wo, wi, h);
-    Color value = specular_ * (f * d * g / (4.0f * wo.z));
+    return specular_ * (f * d * g / (4.0f * wo.z));
+  }
+  Color evalBase(const Vec3& wo, const Vec3& wi) const {
     const float to = externalTransmittance(wo.z), ti = externalTransmittance(wi.z);
-    value += diffuseScaled_ * (kInvPi * invEta2_ * wi.z * to * ti);
-    return value;
+    return diffuseScaled_ * (kInvPi * invEta2_ * wi.z * to * ti);
   }
 
   float pdf(const Vec3& wo, const Vec3& wi) const override {
     if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
     const float pSpec = probSpecular(wo.z), pDiff = 1.0f - pSpec;
-    const Vec3 h = glm::normalize(wo + wi);
-    float spec;
-    if (distr_.sampleVisible()) spec = distr_.D(h) * distr_.smithG1(wo, h) / (4.0f * wo.z);
-    else spec = distr_.pdf(wo, h) / (4.0f * glm::dot(wi, h));
-    return pSpec * spec + pDiff * squareToCosineHemispherePdf(wi);
+    return pSpec * pdfCoat(wo, wi) + pDiff * squareToCosineHemispherePdf(wi);
   }
+  // Density of the coat's microfacet sampling alone (wo.z > 0, wi.z > 0).
+  float pdfCoat(const Vec3& wo, const Vec3& wi) const {
+    const Vec3 h = glm::normalize(wo + wi);
+    if (distr_.sampleVisible()) return distr_.D(h) * distr_.smithG1(wo, h) / (4.0f * wo.z);
+    return distr_.pdf(wo, h) / (4.0f * glm::dot(wi, h));
+  }
+  Vec3 sampleCoat(const Vec3& wo, const Vec2& u2) const { return reflectAbout(wo, distr_.sample(wo, u2).first); }
 
   std::optional<BsdfSample> sample(const Vec3& wo, float u1, const Vec2& u2) const override {
     if (!(wo.z > 0.0f)) return std::nullopt;
     BsdfSample s;
     if (u1 < probSpecular(wo.z)) {
-      const Vec3 m = distr_.sample(wo, u2).first;
-      s.wi = reflectAbout(wo, m);
+      s.wi = sampleCoat(wo, u2);
       s.lobe = kLobeGlossy;
     } else {
       s.wi = squareToCosineHemisphere(u2);
@@ -139,6 +170,8 @@ class RoughPlasticBsdf final : public Bsdf {
            ";nonlinear=" + (nonlinear_ ? "1" : "0") + ")";
   }
   std::string typeName() const override { return "roughplastic"; }
+  const Bsdf* baseLayer() const override { return base_.get(); }
+  const Bsdf* coatLayer() const override { return coat_.get(); }
 
  private:
   float probSpecular(float cosThetaO) const {
@@ -155,7 +188,35 @@ class RoughPlasticBsdf final : public Bsdf {
   float invEta2_ = 1.0f, specularSamplingWeight_ = 0.5f, internalReflectance_ = 0.0f;
   std::shared_ptr<const InterfaceTables> tables_;
   Color diffuseScaled_{0.0f};
+  std::unique_ptr<RoughPlasticLayer> base_, coat_;
 };
+
+Color RoughPlasticLayer::eval(const Vec3& wo, const Vec3& wi) const {
+  if (!(wo.z > 0.0f && wi.z > 0.0f)) return Color(0.0f);
+  return coat_ ? whole_.evalCoat(wo, wi) : whole_.evalBase(wo, wi);
+}
+
+float RoughPlasticLayer::pdf(const Vec3& wo, const Vec3& wi) const {
+  if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
+  return coat_ ? whole_.pdfCoat(wo, wi) : squareToCosineHemispherePdf(wi);
+}
+
+std::optional<BsdfSample> RoughPlasticLayer::sample(const Vec3& wo, float /*u1*/, const Vec2& u2) const {
+  if (!(wo.z > 0.0f)) return std::nullopt;
+  BsdfSample s;
+  s.wi = coat_ ? whole_.sampleCoat(wo, u2) : squareToCosineHemisphere(u2);
+  s.lobe = coat_ ? kLobeGlossy : kLobeDiffuse;
+  s.pdf = pdf(wo, s.wi);
+  if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return std::nullopt;
+  s.weight = eval(wo, s.wi) / s.pdf;
+  return s;
+}
+
+float RoughPlasticLayer::glossyAlpha() const { return coat_ ? whole_.glossyAlpha() : INFINITY; }
+
+std::string RoughPlasticLayer::parameterKey() const {
+  return std::string(coat_ ? "coat of " : "base of ") + whole_.parameterKey();
+}
 
 }  // namespace
 

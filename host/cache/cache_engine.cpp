@@ -87,8 +87,17 @@ Technique CacheEngine::technique(const ShadePoint& sp) const {
   if (isCached(t)) {
     if (sp.wo.z <= 0.0f) return Technique::None;  // back of a one-sided BSDF: black
     if (sp.level >= params_.cacheDepth) return Technique::ImportanceSampling;
+    if (t == Technique::LobeSplit && sp.level > 0) return Technique::ImportanceSampling;
   }
   return t;
+}
+
+Color CacheEngine::lobeSplitDirect(const ShadePoint& sp, Rng& rng, int lightSamples) const {
+  const Bsdf& bsdf = *ctx_.scene.bsdfs[static_cast<size_t>(sp.hit.bsdf)];
+  const int n = std::max(1, lightSamples);
+  Color base(0.0f);
+  for (int k = 0; k < n; ++k) base += directLightLightOnly(directLightContext(sp), sp.hit, sp.frame, sp.wo, *bsdf.baseLayer(), rng);
+  return base / float(n) + lightStrategyMis(ctx_, sp.hit, sp.frame, sp.wo, *bsdf.coatLayer(), rng, lightSamples);
 }
 
 bool CacheEngine::hasIndirect(const ShadePoint& sp) const {
@@ -130,7 +139,8 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
       Rng rng = continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1);
       const Bsdf& bsdf = *ctx_.scene.bsdfs[sp.hit.bsdf];
       const RenderContext& lights = directLightContext(sp);
-      const Color L = continues             ? lightStrategyMis(lights, sp.hit, sp.frame, sp.wo, bsdf, rng, sp.lightSamples)
+      const Color L = technique(sp) == Technique::LobeSplit ? lobeSplitDirect(sp, rng, sp.lightSamples)
+                      : continues             ? lightStrategyMis(lights, sp.hit, sp.frame, sp.wo, bsdf, rng, sp.lightSamples)
                       : bsdf.isDiffuseOnly() ? directLightLightOnly(lights, sp.hit, sp.frame, sp.wo, bsdf, rng)
                                              : directLight(lights, sp.hit, sp.frame, sp.wo, bsdf, rng);
       if (isFinite(L)) out[i] = L;
@@ -147,7 +157,7 @@ void CacheEngine::radianceOut(const std::vector<ShadePoint>& pts, std::vector<Co
 }
 
 void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color>& out, std::vector<LookupAov>* aov,
-                           float relaxedScale) {
+                           float relaxedScale, bool withCoat) {
   out.assign(pts.size(), Color(0.0f));
   if (aov) aov->assign(pts.size(), LookupAov{});
   // Classify in parallel (technique and cache key per point), then group serially over the few
@@ -168,7 +178,7 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
     CacheKey lastKey{};
     std::vector<size_t>* last = nullptr;
     for (size_t i = 0; i < pts.size(); ++i) {
-      if (tech[i] == Technique::ImportanceSampling) sampled.push_back(i);
+      if (tech[i] == Technique::ImportanceSampling || (withCoat && tech[i] == Technique::LobeSplit)) sampled.push_back(i);
       if (!isCached(tech[i])) continue;
       if (!last || keys[i] < lastKey || lastKey < keys[i]) {
         last = &groups[keys[i]];
@@ -216,8 +226,15 @@ void CacheEngine::indirect(const std::vector<ShadePoint>& pts, std::vector<Color
     std::vector<Color> L;
     // Paths continued below a sharp surface keep the relaxed lookups of the final pass.
     continuePaths(sub, L, relaxedScale);
-    for (size_t j = 0; j < sampled.size(); ++j) out[sampled[j]] = L[j];
+    for (size_t j = 0; j < sampled.size(); ++j) out[sampled[j]] += L[j];  // a lobe split's base is there already
   }
+}
+
+void CacheEngine::coatIndirect(const std::vector<ShadePoint>& pts, std::vector<Color>& out, float relaxedScale) {
+  for (const ShadePoint& sp : pts)
+    if (!hasIndirect(sp) || technique(sp) != Technique::LobeSplit)
+      throw Error("coatIndirect: a point that is not lobe-split");
+  continuePaths(pts, out, relaxedScale);
 }
 
 void CacheEngine::fill(const std::vector<ShadePoint>& pts, const std::vector<float>& baseLum, bool adaptive) {
@@ -824,7 +841,10 @@ void CacheEngine::continuePaths(const std::vector<ShadePoint>& pts, std::vector<
       Rng rng = shadePointRng(sp, 2);
       const Vec2 u = rng.next2D();
       const float uLobe = rng.nextFloat();
-      const auto s = ctx_.scene.bsdfs[sp.hit.bsdf]->sample(sp.wo, uLobe, u);
+      const Bsdf& whole = *ctx_.scene.bsdfs[sp.hit.bsdf];
+      // A lobe-split point's base light came from records: only its coat continues.
+      const Bsdf& sampled = technique(sp) == Technique::LobeSplit ? *whole.coatLayer() : whole;
+      const auto s = sampled.sample(sp.wo, uLobe, u);
       if (!s || !isFinite(s->weight) || maxComponent(s->weight) <= 0.0f) continue;
       Color w = s->weight;
       if (sp.depth >= rrDepth_) {

@@ -100,6 +100,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
     Image img = makePathIntegrator(settings_)->render(ctx, stats);
     stats.setText("fallback", fallback.reason);
     stats.set("pilot_served_share", fallback.servedShare);
+    stats.set("pilot_lobe_split_share", fallback.lobeSplitShare);
     return img;
   }
 
@@ -135,6 +136,7 @@ Image RcacheIntegrator::render(const RenderContext& ctxIn, RenderStats& stats) {
                     stats);
   stats.setText("fallback", fallback.reason);
   if (fallback.pilotPoints > 0) stats.set("pilot_served_share", fallback.servedShare);
+  if (fallback.pilotPoints > 0) stats.set("pilot_lobe_split_share", fallback.lobeSplitShare);
   return img;
 }
 

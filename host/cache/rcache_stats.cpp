@@ -70,6 +70,7 @@ void reportRaysAndLookups(const RcacheRun& run, const RcacheReport& r, RenderSta
   stats.set("samples_dropped_nan", double(es.droppedSamples.load() + r.pass.nanSamples()));
   stats.set("bands_reshaded", double(r.pass.bandsReshaded()));
   stats.set("direct_light_only_fraction", cameraRays ? double(r.pass.directLightOnly()) / double(cameraRays) : 0.0);
+  stats.set("lobe_split_fraction", cameraRays ? double(r.pass.lobeSplitSamples()) / double(cameraRays) : 0.0);
 }
 
 void reportKernels(const RcacheRun& run, RenderStats& stats) {
