@@ -16,6 +16,7 @@
 // sampled), the base f_d, cosine-sampled.
 #include <memory>
 
+#include "bsdf/bsdf_layer.h"
 #include "bsdf/bsdf_params.h"
 #include "bsdf/fresnel.h"
 #include "bsdf/plugins.h"
@@ -25,24 +26,6 @@ namespace rc {
 namespace {
 
 inline float meanOf(const Color& c) { return (c.r + c.g + c.b) / 3.0f; }
-
-class PlasticBsdf;
-
-// One term of the plastic sum as a BSDF of its own (Bsdf::baseLayer/coatLayer).
-class PlasticLayer final : public Bsdf {
- public:
-  PlasticLayer(const PlasticBsdf& whole, bool coat) : whole_(whole), coat_(coat) {}
-  Color eval(const Vec3& wo, const Vec3& wi) const override;
-  float pdf(const Vec3& wo, const Vec3& wi) const override;
-  std::optional<BsdfSample> sample(const Vec3& wo, float u1, const Vec2& u2) const override;
-  uint32_t lobes() const override { return coat_ ? kLobeDelta : kLobeDiffuse; }
-  std::string parameterKey() const override;
-  std::string typeName() const override { return coat_ ? "plastic coat" : "plastic base"; }
-
- private:
-  const PlasticBsdf& whole_;
-  bool coat_;
-};
 
 class PlasticBsdf final : public Bsdf {
  public:
@@ -54,8 +37,8 @@ class PlasticBsdf final : public Bsdf {
     specularSamplingWeight_ = sMean / (dMean + sMean);
     const Color denom = nonlinear ? Color(1.0f) - diffuse * fdrInt_ : Color(1.0f - fdrInt_);
     diffuseScaled_ = diffuse / denom;
-    base_ = std::make_unique<PlasticLayer>(*this, false);
-    coat_ = std::make_unique<PlasticLayer>(*this, true);
+    base_ = std::make_unique<BsdfLayer<PlasticBsdf>>(*this, false, kLobeDiffuse);
+    coat_ = std::make_unique<BsdfLayer<PlasticBsdf>>(*this, true, kLobeDelta);
   }
 
   Color eval(const Vec3& wo, const Vec3& wi) const override {
@@ -95,8 +78,27 @@ class PlasticBsdf final : public Bsdf {
   std::string typeName() const override { return "plastic"; }
   const Bsdf* baseLayer() const override { return base_.get(); }
   const Bsdf* coatLayer() const override { return coat_.get(); }
-  // The delta coat's throughput s·F(θo) (wo.z > 0).
-  Color coatWeight(const Vec3& wo) const { return specular_ * fresnelDielectric(wo.z, eta_).r; }
+  // The terms as BSDFs of their own (bsdf/bsdf_layer.h): the delta coat s·F(θo) always taken,
+  // the base cosine-sampled.
+  Color layerEval(bool coat, const Vec3& wo, const Vec3& wi) const { return coat ? Color(0.0f) : eval(wo, wi); }
+  float layerPdf(bool coat, const Vec3& /*wo*/, const Vec3& wi) const {
+    return coat ? 0.0f : squareToCosineHemispherePdf(wi);
+  }
+  std::optional<BsdfSample> layerSample(bool coat, const Vec3& wo, const Vec2& u2) const {
+    BsdfSample s;
+    if (coat) {
+      s.wi = reflectZ(wo);
+      s.weight = specular_ * fresnelDielectric(wo.z, eta_).r;
+      s.lobe = kLobeDelta;
+      return s;
+    }
+    s.wi = squareToCosineHemisphere(u2);
+    s.pdf = squareToCosineHemispherePdf(s.wi);
+    if (!(s.pdf > 0.0f)) return std::nullopt;
+    s.weight = eval(wo, s.wi) / s.pdf;
+    s.lobe = kLobeDiffuse;
+    return s;
+  }
 
  private:
   float probDiffuse(float fo) const {
@@ -110,37 +112,8 @@ class PlasticBsdf final : public Bsdf {
   bool nonlinear_;
   float invEta2_ = 1.0f, fdrInt_ = 0.0f, specularSamplingWeight_ = 0.5f;
   Color diffuseScaled_{0.0f};
-  std::unique_ptr<PlasticLayer> base_, coat_;
+  std::unique_ptr<BsdfLayer<PlasticBsdf>> base_, coat_;
 };
-
-Color PlasticLayer::eval(const Vec3& wo, const Vec3& wi) const { return coat_ ? Color(0.0f) : whole_.eval(wo, wi); }
-
-float PlasticLayer::pdf(const Vec3& wo, const Vec3& wi) const {
-  if (coat_ || !(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
-  return squareToCosineHemispherePdf(wi);
-}
-
-std::optional<BsdfSample> PlasticLayer::sample(const Vec3& wo, float /*u1*/, const Vec2& u2) const {
-  if (!(wo.z > 0.0f)) return std::nullopt;
-  BsdfSample s;
-  if (coat_) {
-    s.wi = reflectZ(wo);
-    s.pdf = 0.0f;
-    s.weight = whole_.coatWeight(wo);
-    s.lobe = kLobeDelta;
-    return s;
-  }
-  s.wi = squareToCosineHemisphere(u2);
-  s.pdf = squareToCosineHemispherePdf(s.wi);
-  if (!(s.pdf > 0.0f)) return std::nullopt;
-  s.weight = eval(wo, s.wi) / s.pdf;
-  s.lobe = kLobeDiffuse;
-  return s;
-}
-
-std::string PlasticLayer::parameterKey() const {
-  return std::string(coat_ ? "coat of " : "base of ") + whole_.parameterKey();
-}
 
 }  // namespace
 

@@ -27,6 +27,7 @@
 #include <mutex>
 #include <tuple>
 
+#include "bsdf/bsdf_layer.h"
 #include "bsdf/bsdf_params.h"
 #include "bsdf/fresnel.h"
 #include "bsdf/microfacet.h"
@@ -72,25 +73,6 @@ std::shared_ptr<const InterfaceTables> interfaceTables(const Microfacet& distr, 
   return cache.emplace(key, tables).first->second;
 }
 
-class RoughPlasticBsdf;
-
-// One term of the roughplastic sum as a BSDF of its own (Bsdf::baseLayer/coatLayer).
-class RoughPlasticLayer final : public Bsdf {
- public:
-  RoughPlasticLayer(const RoughPlasticBsdf& whole, bool coat) : whole_(whole), coat_(coat) {}
-  Color eval(const Vec3& wo, const Vec3& wi) const override;
-  float pdf(const Vec3& wo, const Vec3& wi) const override;
-  std::optional<BsdfSample> sample(const Vec3& wo, float u1, const Vec2& u2) const override;
-  uint32_t lobes() const override { return coat_ ? kLobeGlossy : kLobeDiffuse; }
-  float glossyAlpha() const override;
-  std::string parameterKey() const override;
-  std::string typeName() const override { return coat_ ? "roughplastic coat" : "roughplastic base"; }
-
- private:
-  const RoughPlasticBsdf& whole_;
-  bool coat_;
-};
-
 class RoughPlasticBsdf final : public Bsdf {
  public:
   RoughPlasticBsdf(const Microfacet& distr, const Color& diffuse, const Color& specular, float eta, bool nonlinear)
@@ -102,8 +84,8 @@ class RoughPlasticBsdf final : public Bsdf {
     internalReflectance_ = tables_->internalReflectance;
     const Color denom = nonlinear ? Color(1.0f) - diffuse * internalReflectance_ : Color(1.0f - internalReflectance_);
     diffuseScaled_ = diffuse / denom;
-    base_ = std::make_unique<RoughPlasticLayer>(*this, false);
-    coat_ = std::make_unique<RoughPlasticLayer>(*this, true);
+    base_ = std::make_unique<BsdfLayer<RoughPlasticBsdf>>(*this, false, kLobeDiffuse);
+    coat_ = std::make_unique<BsdfLayer<RoughPlasticBsdf>>(*this, true, kLobeGlossy);
   }
 
   float externalTransmittance(float cosTheta) const {
@@ -145,6 +127,23 @@ class RoughPlasticBsdf final : public Bsdf {
     return distr_.pdf(wo, h) / (4.0f * glm::dot(wi, h));
   }
   Vec3 sampleCoat(const Vec3& wo, const Vec2& u2) const { return reflectAbout(wo, distr_.sample(wo, u2).first); }
+
+  // The terms as BSDFs of their own (bsdf/bsdf_layer.h): the coat sampled by its distribution,
+  // the base by the cosine.
+  Color layerEval(bool coat, const Vec3& wo, const Vec3& wi) const { return coat ? evalCoat(wo, wi) : evalBase(wo, wi); }
+  float layerPdf(bool coat, const Vec3& wo, const Vec3& wi) const {
+    return coat ? pdfCoat(wo, wi) : squareToCosineHemispherePdf(wi);
+  }
+  std::optional<BsdfSample> layerSample(bool coat, const Vec3& wo, const Vec2& u2) const {
+    BsdfSample s;
+    s.wi = coat ? sampleCoat(wo, u2) : squareToCosineHemisphere(u2);
+    s.lobe = coat ? kLobeGlossy : kLobeDiffuse;
+    if (!(s.wi.z > 0.0f)) return std::nullopt;
+    s.pdf = layerPdf(coat, wo, s.wi);
+    if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return std::nullopt;
+    s.weight = layerEval(coat, wo, s.wi) / s.pdf;
+    return s;
+  }
 
   std::optional<BsdfSample> sample(const Vec3& wo, float u1, const Vec2& u2) const override {
     if (!(wo.z > 0.0f)) return std::nullopt;
@@ -188,35 +187,8 @@ class RoughPlasticBsdf final : public Bsdf {
   float invEta2_ = 1.0f, specularSamplingWeight_ = 0.5f, internalReflectance_ = 0.0f;
   std::shared_ptr<const InterfaceTables> tables_;
   Color diffuseScaled_{0.0f};
-  std::unique_ptr<RoughPlasticLayer> base_, coat_;
+  std::unique_ptr<BsdfLayer<RoughPlasticBsdf>> base_, coat_;
 };
-
-Color RoughPlasticLayer::eval(const Vec3& wo, const Vec3& wi) const {
-  if (!(wo.z > 0.0f && wi.z > 0.0f)) return Color(0.0f);
-  return coat_ ? whole_.evalCoat(wo, wi) : whole_.evalBase(wo, wi);
-}
-
-float RoughPlasticLayer::pdf(const Vec3& wo, const Vec3& wi) const {
-  if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
-  return coat_ ? whole_.pdfCoat(wo, wi) : squareToCosineHemispherePdf(wi);
-}
-
-std::optional<BsdfSample> RoughPlasticLayer::sample(const Vec3& wo, float /*u1*/, const Vec2& u2) const {
-  if (!(wo.z > 0.0f)) return std::nullopt;
-  BsdfSample s;
-  s.wi = coat_ ? whole_.sampleCoat(wo, u2) : squareToCosineHemisphere(u2);
-  s.lobe = coat_ ? kLobeGlossy : kLobeDiffuse;
-  s.pdf = pdf(wo, s.wi);
-  if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return std::nullopt;
-  s.weight = eval(wo, s.wi) / s.pdf;
-  return s;
-}
-
-float RoughPlasticLayer::glossyAlpha() const { return coat_ ? whole_.glossyAlpha() : INFINITY; }
-
-std::string RoughPlasticLayer::parameterKey() const {
-  return std::string(coat_ ? "coat of " : "base of ") + whole_.parameterKey();
-}
 
 }  // namespace
 

@@ -104,14 +104,14 @@ TEST(LobeSplit, PlanSplitsSharpCoats) {
   std::filesystem::remove_all(dir);
 }
 
-// A rough-plastic floor (α 0.1: too sharp for the cache) and a rough-plastic sphere under the sun
-// sky: the pilot keeps the cache, counting the bases as served, the final pass splits the lobes,
+// A rough-plastic floor (α 0.1: too sharp for the cache), a rough-plastic and a smooth-plastic
+// sphere under the sun sky: the pilot keeps the cache, counting the bases as served, the final pass splits the lobes,
 // and every 16-px block agrees with the path tracer.
 TEST(LobeSplit, RoughPlasticUnderSkyAgreesWithPathTracerPerBlock) {
   Scene s;
   s.bsdfs.push_back(plastic("roughplastic", 0.1f, Color(0.5f, 0.45f, 0.4f)));  // 0 floor
   s.bsdfs.push_back(plastic("roughplastic", 0.05f, Color(0.2f, 0.5f, 0.7f)));  // 1 sphere
-  s.bsdfs.push_back(test::diffuse(0.6f, 0.6f, 0.6f));                          // 2 sphere
+  s.bsdfs.push_back(plastic("plastic", 0.0f, Color(0.6f, 0.6f, 0.6f)));        // 2 sphere (delta coat)
   test::addQuad(s, {-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}, 0);
   Sphere a;
   a.name = "plastic";
@@ -120,7 +120,7 @@ TEST(LobeSplit, RoughPlasticUnderSkyAgreesWithPathTracerPerBlock) {
   a.bsdf = 1;
   s.spheres.push_back(a);
   Sphere b = a;
-  b.name = "diffuse";
+  b.name = "smooth plastic";
   b.center = Vec3(0.6f, 0.4f, 0.3f);
   b.radius = 0.4f;
   b.bsdf = 2;
@@ -134,13 +134,22 @@ TEST(LobeSplit, RoughPlasticUnderSkyAgreesWithPathTracerPerBlock) {
   EXPECT_GT(split.stats.get("lobe_split_fraction"), 0.3);
   EXPECT_GT(split.stats.get("records"), 0.0);
   EXPECT_EQ(test::statText(split.stats, "env_cache"), "split");
-  const test::BlockStats r = test::blockMeans(ref.image, 16), m = test::blockMeans(split.image, 16);
+  // The whole environment light-sampled by the bases (no environment in the records) too.
+  const auto sampled = test::renderScene(s, test::rcacheSettings(s, {{"env_cache", "false"}}), 16, 3);
+  EXPECT_GT(sampled.stats.get("lobe_split_fraction"), 0.3);
+  const test::BlockStats r = test::blockMeans(ref.image, 16), m = test::blockMeans(split.image, 16),
+                         n = test::blockMeans(sampled.image, 16);
   // Tolerance as in LightSplit.CachedEnvironmentAgreesWithPathTracerPerBlock: 4 % of the block
   // mean + 0.01 per channel (half the 512-spp reference's own noise, half the records').
-  double worst = 0.0;
-  for (size_t i = 0; i < r.mean.size(); ++i) worst = std::max(worst, std::fabs(m.mean[i] - r.mean[i]) / (0.04 * r.mean[i] + 0.01));
-  std::printf("worst block error / tolerance: lobe split %.3f\n", worst);
+  double worst = 0.0, worstSampled = 0.0;
+  for (size_t i = 0; i < r.mean.size(); ++i) {
+    const double tol = 0.04 * r.mean[i] + 0.01;
+    worst = std::max(worst, std::fabs(m.mean[i] - r.mean[i]) / tol);
+    worstSampled = std::max(worstSampled, std::fabs(n.mean[i] - r.mean[i]) / tol);
+  }
+  std::printf("worst block error / tolerance: lobe split %.3f, env sampled %.3f\n", worst, worstSampled);
   EXPECT_LT(worst, 1.0);
+  EXPECT_LT(worstSampled, 1.0);
 }
 
 }  // namespace
