@@ -30,6 +30,10 @@ struct RcacheParams {
   bool areaCache = false;
   bool fallback = true;
   float fallbackShare = 0.25f;
+  // Lobe split of layered materials (Technique::LobeSplit): Auto lets the cost pilot choose.
+  enum class LobeSplitMode { Auto, On, Off } lobeSplit = LobeSplitMode::Auto;
+  bool costPilot = true;
+  float costPilotShare = 0.05f;  // the cost pilot's budget, a share of the path-traced render
 };
 
 // Throws rc::Error("parameter 'x' = '...': ...") for a malformed or out-of-range value.

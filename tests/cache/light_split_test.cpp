@@ -13,39 +13,11 @@
 namespace rc {
 namespace {
 
-constexpr int kEnvW = 64, kEnvH = 33;
-
-std::string statText(const RenderStats& st, const std::string& key) {
-  for (const auto& [k, v] : st.texts)
-    if (k == key) return v;
-  return "";
-}
-
-// A sky: luminance rising toward the zenith, dark ground below the horizon, optionally a sun
-// (a 2×2-texel block `sunLum` bright, 30° above the horizon).
-std::vector<Color> skyTexels(float sunLum) {
-  std::vector<Color> px(static_cast<size_t>(kEnvW) * kEnvH);
-  for (int y = 0; y < kEnvH; ++y)
-    for (int x = 0; x < kEnvW; ++x) {
-      const float cosTheta = std::cos(kPi * y / (kEnvH - 1));
-      px[static_cast<size_t>(y) * kEnvW + x] =
-          cosTheta > 0.0f ? Color(0.6f, 0.8f, 1.2f) * (0.5f + cosTheta) : Color(0.08f, 0.07f, 0.06f);
-    }
-  if (sunLum > 0.0f)
-    for (int y = 10; y < 12; ++y)
-      for (int x = 20; x < 22; ++x) px[static_cast<size_t>(y) * kEnvW + x] = Color(sunLum);
-  return px;
-}
-
-Emitter skyEmitter(float sunLum) {
-  Emitter e;
-  e.type = EmitterType::Envmap;
-  e.filename = "synthetic-sky";
-  e.envWidth = kEnvW;
-  e.envHeight = kEnvH;
-  e.envPixels = skyTexels(sunLum);
-  return e;
-}
+using test::kEnvH;
+using test::kEnvW;
+using test::skyEmitter;
+using test::skyTexels;
+using test::statText;
 
 TEST(LightSplit, UniformMapIsCachedWholeAndSunIsSplitOff) {
   const std::vector<Color> uniform(static_cast<size_t>(kEnvW) * kEnvH, Color(2.0f));
@@ -126,21 +98,8 @@ Scene skyScene(int res) {
   return s;
 }
 
-struct BlockStats {
-  std::vector<double> mean;  // per block, per channel: 3 values each
-};
-BlockStats blockMeans(const Image& img, int block) {
-  BlockStats b;
-  for (int by = 0; by < img.height / block; ++by)
-    for (int bx = 0; bx < img.width / block; ++bx) {
-      double m[3] = {};
-      for (int y = by * block; y < (by + 1) * block; ++y)
-        for (int x = bx * block; x < (bx + 1) * block; ++x)
-          for (int c = 0; c < 3; ++c) m[c] += img.pixels[static_cast<size_t>(y) * img.width + x][c];
-      for (double v : m) b.mean.push_back(v / (block * block));
-    }
-  return b;
-}
+using test::BlockStats;
+using test::blockMeans;
 
 TEST(LightSplit, CachedEnvironmentAgreesWithPathTracerPerBlock) {
   const Scene s = skyScene(48);

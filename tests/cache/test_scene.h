@@ -2,8 +2,10 @@
 // Small programmatic scenes and a render helper for the cache tests (no scene files needed, so
 // these tests pin the integrator, not the parser). A Cornell-like box: glossy (or diffuse) floor,
 // coloured diffuse walls, a square area light under the ceiling, camera looking in.
+#include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "bsdf/bsdf_factory.h"
 #include "cache/rcache_integrator.h"
@@ -129,6 +131,56 @@ inline IntegratorSettings pathSettings(const Scene& s) {
   IntegratorSettings is = s.integrator;
   is.type = "path";
   return is;
+}
+
+// Statistics text `key` of a render, "" when absent.
+inline std::string statText(const RenderStats& st, const std::string& key) {
+  for (const auto& [k, v] : st.texts)
+    if (k == key) return v;
+  return "";
+}
+
+// A synthetic sky envmap of kEnvW×kEnvH texels: luminance rising toward the zenith, dark ground
+// below the horizon, optionally a sun (a 2×2-texel block `sunLum` bright, 30° above the horizon).
+constexpr int kEnvW = 64, kEnvH = 33;
+inline std::vector<Color> skyTexels(float sunLum) {
+  std::vector<Color> px(static_cast<size_t>(kEnvW) * kEnvH);
+  for (int y = 0; y < kEnvH; ++y)
+    for (int x = 0; x < kEnvW; ++x) {
+      const float cosTheta = std::cos(kPi * y / (kEnvH - 1));
+      px[static_cast<size_t>(y) * kEnvW + x] =
+          cosTheta > 0.0f ? Color(0.6f, 0.8f, 1.2f) * (0.5f + cosTheta) : Color(0.08f, 0.07f, 0.06f);
+    }
+  if (sunLum > 0.0f)
+    for (int y = 10; y < 12; ++y)
+      for (int x = 20; x < 22; ++x) px[static_cast<size_t>(y) * kEnvW + x] = Color(sunLum);
+  return px;
+}
+inline Emitter skyEmitter(float sunLum) {
+  Emitter e;
+  e.type = EmitterType::Envmap;
+  e.filename = "synthetic-sky";
+  e.envWidth = kEnvW;
+  e.envHeight = kEnvH;
+  e.envPixels = skyTexels(sunLum);
+  return e;
+}
+
+// Per block×block block and channel, the mean of the image (the per-block bias check).
+struct BlockStats {
+  std::vector<double> mean;  // per block, per channel: 3 values each
+};
+inline BlockStats blockMeans(const Image& img, int block) {
+  BlockStats b;
+  for (int by = 0; by < img.height / block; ++by)
+    for (int bx = 0; bx < img.width / block; ++bx) {
+      double m[3] = {};
+      for (int y = by * block; y < (by + 1) * block; ++y)
+        for (int x = bx * block; x < (bx + 1) * block; ++x)
+          for (int c = 0; c < 3; ++c) m[c] += img.pixels[static_cast<size_t>(y) * img.width + x][c];
+      for (double v : m) b.mean.push_back(v / (block * block));
+    }
+  return b;
 }
 
 }  // namespace rc::test
