@@ -77,30 +77,14 @@ struct PilotRender {
 struct RcachePilot {
   CandidateKind kind;
   PilotRender fillA, passA1, passA2, passB;  // fill times in fillA/.. seconds; images of the passes
-  double recordGrowth = 1.0;  // records at the image's film per record of the pilot's
+  double recordGrowth = 1.0;  // records (and fill seconds) at the image's film per record of the pilot's
   double seconds = 0.0;       // the candidate's pilot, all of it
 };
 
-// How many records the image's fill makes per record of the pilot's (film `linear` times finer):
-// a record whose reach the pixel clamps bound (r_min, r_max in footprints) multiplies by up to
-// linear² (its reach follows the pixel), one whose reach is the scene's (harmonic-mean distance,
-// gradients) stays one record until the finer r_max clamp binds it.
-double recordGrowth(CacheEngine& engine, const RcacheParams& params, double linear) {
-  double grown = 0.0, records = 0.0;
-  for (auto& [key, cache] : engine.caches()) {
-    const float aL = engine.aForLevel(key.level), levelScale = aL / params.a;
-    for (uint32_t id = 0; id < cache->size(); ++id) {
-      const RecordInfo r = cache->info(id);
-      const double reachPx = double(r.R) * aL / (double(levelScale) * engine.footprint(r.p, key.level));
-      const double atImage = reachPx * linear;
-      const double growth = reachPx <= params.rMinPx * 1.001 ? linear * linear
-                                                             : std::clamp(atImage * atImage / (double(params.rMaxPx) * params.rMaxPx),
-                                                                          1.0, linear * linear);
-      grown += growth;
-      records += 1.0;
-    }
-  }
-  return records > 0.0 ? grown / records : linear * linear;
+size_t recordCount(CacheEngine& engine) {
+  size_t n = 0;
+  for (auto& [key, cache] : engine.caches()) n += cache->size();
+  return n;
 }
 
 class Pilot {
@@ -128,12 +112,18 @@ class Pilot {
 
   // Two final passes (seeds a1, a2) over one cache filled with seed a1, and one over a cache
   // filled with seed b.
-  RcachePilot rcache(CandidateKind kind, uint64_t a1, uint64_t a2, uint64_t b, double linear) {
+  // `coarser`: the same pilot at a quarter of the pixels, whose fill's record count gives the
+  // growth of the records with the pixels.
+  RcachePilot rcache(CandidateKind kind, uint64_t a1, uint64_t a2, uint64_t b, Pilot& coarser, double toImage) {
     const auto start = SteadyClock::now();
     RcachePilot p{kind, {}, {}, {}, {}};
     const Cache cacheA(*this, kind, a1);
     p.fillA.seconds = cacheA.fillSeconds;
-    p.recordGrowth = recordGrowth(cacheA.engine, in_.params, linear);
+    const double records = double(recordCount(cacheA.engine));
+    const Cache coarseCache(coarser, kind, a1);
+    const double coarse = double(recordCount(coarseCache.engine));
+    const double exponent = records > 0.0 && coarse > 0.0 ? std::clamp(std::log(records / coarse) / std::log(4.0), 0.0, 1.0) : 1.0;
+    p.recordGrowth = std::pow(toImage, exponent);
     p.passA1 = cacheA.finalPass(a1);
     p.passA2 = cacheA.finalPass(a2);
     const Cache cacheB(*this, kind, b);
@@ -269,7 +259,7 @@ CostPilotReport runCostPilot(const CostPilotInputs& in) {
   report.pilotSpp = spp;
   const double toImage = pixels / (double(w) * double(h));  // seconds scale with pixels
 
-  Pilot pilot(in, w, h, spp);
+  Pilot pilot(in, w, h, spp), coarser(in, std::max(4, w / 2), std::max(4, h / 2), spp);
   auto seed = [&](uint64_t k) { return hashMix(in.seed, kSaltCostPilot, k); };
   const PilotRender pathA = pilot.pathTraced(seed(1)), pathB = pilot.pathTraced(seed(2));
   // The pilot may cost at most cost_pilot_share of the path tracer's render (issue 17: where caching
@@ -287,7 +277,7 @@ CostPilotReport runCostPilot(const CostPilotInputs& in) {
       report.skipped.push_back(k);
       continue;
     }
-    rc.push_back(pilot.rcache(k, seed(3), seed(4), seed(5), std::sqrt(toImage)));
+    rc.push_back(pilot.rcache(k, seed(3), seed(4), seed(5), coarser, toImage));
     expected = rc.back().seconds;
   }
   if (pilot.cancelled()) {
