@@ -55,21 +55,12 @@ TEST(CostPilot, ChoosesTheFastestToThePathTracersError) {
   EXPECT_EQ(chooseByCost({estimate(CandidateKind::Rcache, 0.1, 0.0, 1.0, 1.0)}, 64).chosen, -1);
 }
 
-BsdfPtr roughPlastic(float alpha, Color base) {
-  Properties props;
-  props.pluginType = "roughplastic";
-  props.set("distribution", test::stringProp("ggx"));
-  props.set("alpha", test::floatProp(alpha));
-  props.set("diffuse_reflectance", test::rgbProp(base.r, base.g, base.b));
-  return createBsdf(props, {});
-}
-
 // A rough-plastic floor too sharp for the cache (α 0.1: lobe split), a diffuse wall behind and a
 // diffuse sphere under a sky, 96² (the smallest image the cost pilot runs on): the share pilot
 // caches it with and without the split.
 Scene skyScene() {
   Scene s;
-  s.bsdfs.push_back(roughPlastic(0.1f, Color(0.5f, 0.45f, 0.4f)));
+  s.bsdfs.push_back(test::layeredPlastic("roughplastic", 0.1f, Color(0.5f, 0.45f, 0.4f)));
   s.bsdfs.push_back(test::diffuse(0.6f, 0.5f, 0.4f));
   test::addQuad(s, {-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}, 0);
   test::addQuad(s, {-4, 0, -1}, {4, 0, -1}, {4, 4, -1}, {-4, 4, -1}, 1);

@@ -16,16 +16,7 @@
 namespace rc {
 namespace {
 
-BsdfPtr plastic(const std::string& type, float alpha, Color base) {
-  Properties props;
-  props.pluginType = type;
-  if (type == "roughplastic") {
-    props.set("distribution", test::stringProp("ggx"));
-    props.set("alpha", test::floatProp(alpha));
-  }
-  props.set("diffuse_reflectance", test::rgbProp(base.r, base.g, base.b));
-  return createBsdf(props, {});
-}
+BsdfPtr plastic(const std::string& type, float alpha, Color base) { return test::layeredPlastic(type, alpha, base); }
 
 Vec3 hemisphereDirection(Rng& rng) {
   const Vec2 u = rng.next2D();

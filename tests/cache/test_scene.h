@@ -28,6 +28,18 @@ inline BsdfPtr diffuse(float r, float g, float b) {
   return createBsdf(props, {});
 }
 
+// "plastic" (alpha unused) or "roughplastic" (GGX α) over a diffuse base of reflectance `base`.
+inline BsdfPtr layeredPlastic(const std::string& type, float alpha, Color base) {
+  Properties props;
+  props.pluginType = type;
+  if (type == "roughplastic") {
+    props.set("distribution", stringProp("ggx"));
+    props.set("alpha", floatProp(alpha));
+  }
+  props.set("diffuse_reflectance", rgbProp(base.r, base.g, base.b));
+  return createBsdf(props, {});
+}
+
 // alpha ≤ 0 → diffuse grey floor instead.
 inline BsdfPtr glossy(float alpha) {
   Properties props;
