@@ -250,6 +250,12 @@ CostPilotReport runCostPilot(const CostPilotInputs& in) {
     report.reason = "image too small for a cost pilot";
     return report;
   }
+  // Its choice follows timings: the tiles of one image (crop windows, the Dask driver) could
+  // choose differently, so they keep the share pilot's verdict, which they make alike.
+  if (film.cropWidth > 0 || film.cropHeight > 0) {
+    report.reason = "not run for a crop window";
+    return report;
+  }
   const double pilotPixels = std::clamp(pixels * kPilotPixelShare, kMinPilotPixels, kMaxPilotPixels);
   const double scale = std::sqrt(pilotPixels / pixels);
   const int w = std::max(8, int(std::lround(film.width * scale))), h = std::max(8, int(std::lround(film.height * scale)));

@@ -21,7 +21,8 @@
 // seconds. The fastest is chosen; the path tracer costs t_path·N. Assumed, not measured: relMSE
 // per pixel and seconds per sample per pixel do not depend on the resolution, so what 1/64 of the
 // pixels shows holds for the image. Images below
-// 16 × 24² pixels are not piloted this way (the pilot would cost about as much as the render).
+// 16 × 24² pixels are not piloted this way (the pilot would cost about as much as the render), nor
+// crop windows (its choice follows timings, and the tiles of one image must choose alike).
 #include <string>
 #include <vector>
 
