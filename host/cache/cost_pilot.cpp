@@ -77,7 +77,8 @@ struct PilotRender {
 struct RcachePilot {
   CandidateKind kind;
   PilotRender fillA, passA1, passA2, passB;  // fill times in fillA/.. seconds; images of the passes
-  double recordGrowth = 1.0;  // records (and fill seconds) at the image's film per record of the pilot's
+  double recordGrowth = 1.0;  // records at the image's film per record of the pilot's
+  double fillImageS = 0.0;    // the image's fill, predicted
   double seconds = 0.0;       // the candidate's pilot, all of it
 };
 
@@ -124,6 +125,13 @@ class Pilot {
     const double coarse = double(recordCount(coarseCache.engine));
     const double exponent = records > 0.0 && coarse > 0.0 ? std::clamp(std::log(records / coarse) / std::log(4.0), 0.0, 1.0) : 1.0;
     p.recordGrowth = std::pow(toImage, exponent);
+    // The fill's seconds as a fixed part plus a part per record, from the two fills (the fixed
+    // part — passes, batches, kernels — does not grow with the records).
+    const double perRecord = records > coarse && cacheA.fillSeconds > coarseCache.fillSeconds
+                                 ? (cacheA.fillSeconds - coarseCache.fillSeconds) / (records - coarse)
+                                 : records > 0.0 ? cacheA.fillSeconds / records : 0.0;
+    const double fixed = std::max(0.0, cacheA.fillSeconds - perRecord * records);
+    p.fillImageS = fixed + perRecord * records * p.recordGrowth;
     p.passA1 = cacheA.finalPass(a1);
     p.passA2 = cacheA.finalPass(a2);
     const Cache cacheB(*this, kind, b);
@@ -252,7 +260,7 @@ CostPilotReport runCostPilot(const CostPilotInputs& in) {
   }
   // Its choice follows timings: the tiles of one image (crop windows, the Dask driver) could
   // choose differently, so they keep the share pilot's verdict, which they make alike.
-  if (film.cropWidth > 0 || film.cropHeight > 0) {
+  if (film.cropX != 0 || film.cropY != 0 || film.imageWidth() != film.width || film.imageHeight() != film.height) {
     report.reason = "not run for a crop window";
     return report;
   }
@@ -316,7 +324,7 @@ CostPilotReport runCostPilot(const CostPilotInputs& in) {
     const double whole = 0.5 * pairRelMse(p.passA1.image, p.passB.image, ref);    // V/spp + B: two caches
     e.variance = passes * spp;
     e.floor = std::max(0.0, whole - passes);
-    e.fixedS = p.fillA.seconds * p.recordGrowth;
+    e.fixedS = p.fillImageS;
     e.perSppS = (p.passA1.seconds + p.passA2.seconds + p.passB.seconds) / (3.0 * spp) * toImage;
     est.push_back(e);
   }

@@ -9,11 +9,11 @@
 //      samples (rcache: two final passes over one cache);
 //   B  rcache's floor: the error more final-pass samples leave (the records' own noise), as the
 //      relMSE between renders over two independently filled caches, less the final passes' part;
-//   F  the fill's seconds, scaled by the records the image's fill is expected to make per record
-//      of the pilot's: records grow with the pixels as pixels^γ (γ = 1 where the pixel clamps
+//   F  the image's fill: records grow with the pixels as pixels^γ (γ = 1 where the pixel clamps
 //      r_min/r_max bound every record, 0 where the scene's geometry does, about ½ for records
-//      along edges), γ measured by a third fill at a quarter of the pilot's pixels; t the seconds
-//      per sample per pixel, scaled by the ratio of the image's pixels to the pilot's.
+//      along edges), and a fill costs a fixed part plus a part per record; γ and both parts come
+//      from a third fill at a quarter of the pilot's pixels; t the seconds per sample per pixel,
+//      scaled by the ratio of the image's pixels to the pilot's.
 // The pilot itself is held to 5 % of the path tracer's predicted render time: a candidate whose
 // pilot would not fit is not tried (and not chosen), so a short render is path traced.
 // The target is the path tracer's error at the user's spp N, E* = V_path / N; a candidate needs
