@@ -128,7 +128,7 @@ void BrdfTableSet::build(const std::vector<BsdfPtr>& bsdfs, const BrdfTableOptio
   for (const BsdfPtr& b : bsdfs) {
     if (!b) throw Error("brdf tables: null BSDF in the scene's list");
     kinds.push_back(classify(*b));
-    anyCached = anyCached || kinds.back() != Kind::Sampled;
+    anyCached = anyCached || kinds.back() != Kind::Sampled || (opt.lobeSplit && b->baseLayer() && !b->spatiallyVarying());
   }
   BrdfDiskTables disk;
   disk.forceRebuild = opt.forceRebuild;
@@ -148,6 +148,10 @@ MaterialPlan BrdfTableSet::planMaterial(const Bsdf& bsdf, Kind kind, const BrdfT
   MaterialPlan plan;
   plan.name = bsdf.id.empty() ? bsdf.typeName() : bsdf.id;
   plan.technique = Technique::ImportanceSampling;
+  // Layers of a BSDF textured per point would need a table per point (classify).
+  const Bsdf* layer = opt.lobeSplit && !bsdf.spatiallyVarying() ? bsdf.baseLayer() : nullptr;
+  // A layered BSDF whose coat is a delta lobe: only its base can be cached.
+  if (kind == Kind::Sampled && layer && !(bsdf.lobes() & kLobeTransmission)) return planLobeSplit(bsdf, opt, disk, tableByKey, start);
   if (kind == Kind::Sampled) return plan;
   const std::string base = "rcache brdf table v" + std::to_string(kBrdfCacheFormatVersion) + "\n" + bsdf.parameterKey();
   bool hit = true;
@@ -161,6 +165,7 @@ MaterialPlan BrdfTableSet::planMaterial(const Bsdf& bsdf, Kind kind, const BrdfT
   } else {
     std::vector<double> worst;
     order = glossyOrder(bsdf, base, opt, disk, worst, hit);
+    if (order == 0 && layer) return planLobeSplit(bsdf, opt, disk, tableByKey, start);  // the coat is too sharp
     if (order == 0) {  // too sharp for the cap
       plan.truncationError = worst.empty() ? 0.0 : worst.back();
       plan.tableCacheHit = hit;
@@ -170,10 +175,37 @@ MaterialPlan BrdfTableSet::planMaterial(const Bsdf& bsdf, Kind kind, const BrdfT
     plan.technique = Technique::RadianceCache;
     plan.truncationError = worst[order - 1];
   }
+  const bool iso1d = bsdf.isotropic();
+  const int res = kind == Kind::Diffuse ? opt.diffuseRes : iso1d ? opt.isotropicRes : opt.anisotropicRes;
+  addTable(bsdf, base, order, res, opt, disk, tableByKey, plan, hit);
+  plan.tableCacheHit = hit;
+  plan.tableMs = millisecondsSince(start);
+  return plan;
+}
+
+// The base layer of a layered BSDF (diffuse under a coat) is planned like a diffuse material, at
+// the irradiance cache's order, but its table is tabulated over ω_o like a glossy one: the coat's
+// transmittance into the base depends on θ_o.
+MaterialPlan BrdfTableSet::planLobeSplit(const Bsdf& bsdf, const BrdfTableOptions& opt, const BrdfDiskTables& disk,
+                                         std::map<std::string, int>& tableByKey,
+                                         std::chrono::steady_clock::time_point start) {
+  const Bsdf& layer = *bsdf.baseLayer();
+  MaterialPlan plan;
+  plan.name = bsdf.id.empty() ? bsdf.typeName() : bsdf.id;
+  plan.technique = Technique::LobeSplit;
+  const std::string base = "rcache brdf table v" + std::to_string(kBrdfCacheFormatVersion) + "\n" + layer.parameterKey();
+  bool hit = true;
+  addTable(layer, base, opt.diffuseOrder, layer.isotropic() ? opt.isotropicRes : opt.anisotropicRes, opt, disk,
+           tableByKey, plan, hit);
+  plan.tableCacheHit = hit;
+  plan.tableMs = millisecondsSince(start);
+  return plan;
+}
+
+void BrdfTableSet::addTable(const Bsdf& bsdf, const std::string& base, int order, int res, const BrdfTableOptions& opt,
+                            const BrdfDiskTables& disk, std::map<std::string, int>& tableByKey, MaterialPlan& plan,
+                            bool& hit) {
   const int tableKind = bsdf.isotropic() ? RC_TABLE_ISOTROPIC_1D : RC_TABLE_ANISOTROPIC_2D;
-  const int res = kind == Kind::Diffuse                   ? opt.diffuseRes
-                  : tableKind == RC_TABLE_ISOTROPIC_1D ? opt.isotropicRes
-                                                       : opt.anisotropicRes;
   const LobeQuadrature& quad = tableKind == RC_TABLE_ANISOTROPIC_2D ? opt.anisotropicQuadrature : opt.tableQuadrature;
   const std::string tableKey = base + "\ntable kind=" + std::to_string(tableKind) + " res=" + std::to_string(res) +
                                " order=" + std::to_string(order) + " " + quadKey(quad);
@@ -181,23 +213,26 @@ MaterialPlan BrdfTableSet::planMaterial(const Bsdf& bsdf, Kind kind, const BrdfT
   plan.tableKind = tableKind;
   if (auto it = tableByKey.find(tableKey); it != tableByKey.end()) {
     plan.tableIndex = it->second;  // same parameters as an earlier material
-  } else {
-    const std::vector<float> payload = loadOrBuildTable(bsdf, tableKey, tableKind, order, res, quad, disk, hit);
-    RcBrdfTable t;
-    t.kind = tableKind;
-    t.order = order;
-    t.res = res;
-    if (data_.size() + payload.size() > static_cast<size_t>(INT32_MAX))
-      throw Error("brdf tables: table data exceeds 2^31 floats");
-    t.offset = static_cast<int32_t>(data_.size());
-    data_.insert(data_.end(), payload.begin(), payload.end());
-    plan.tableIndex = static_cast<int>(tables_.size());
-    tables_.push_back(t);
-    tableByKey[tableKey] = plan.tableIndex;
+    return;
   }
-  plan.tableCacheHit = hit;
-  plan.tableMs = millisecondsSince(start);
-  return plan;
+  const std::vector<float> payload = loadOrBuildTable(bsdf, tableKey, tableKind, order, res, quad, disk, hit);
+  RcBrdfTable t;
+  t.kind = tableKind;
+  t.order = order;
+  t.res = res;
+  if (data_.size() + payload.size() > static_cast<size_t>(INT32_MAX))
+    throw Error("brdf tables: table data exceeds 2^31 floats");
+  t.offset = static_cast<int32_t>(data_.size());
+  data_.insert(data_.end(), payload.begin(), payload.end());
+  plan.tableIndex = static_cast<int>(tables_.size());
+  tables_.push_back(t);
+  tableByKey[tableKey] = plan.tableIndex;
+}
+
+bool BrdfTableSet::anyLobeSplit() const {
+  for (const MaterialPlan& p : plans_)
+    if (p.technique == Technique::LobeSplit) return true;
+  return false;
 }
 
 MaterialPlan BrdfTableSet::planAlphaNodes(const Bsdf& bsdf, const BrdfTableOptions& opt, const BrdfDiskTables& disk,
@@ -266,6 +301,7 @@ const char* techniqueName(Technique t) {
     case Technique::IrradianceCache: return "irradiance cache";
     case Technique::RadianceCache: return "radiance cache";
     case Technique::ImportanceSampling: return "importance sampling";
+    case Technique::LobeSplit: return "lobe split";
     case Technique::None: break;
   }
   return "none";

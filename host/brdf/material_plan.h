@@ -12,9 +12,13 @@
 //   glossy                             → "radiance cache" at the smallest order whose worst
 //                                        relative L2 truncation error ≤ tolerance (capped), or
 //                                        "importance sampling" when even the cap is too coarse.
+//   a layered BSDF (Bsdf::baseLayer/coatLayer) that the rules above would importance-sample as a
+//   whole (a sharp or delta coat)   → "lobe split": the base layer's order-3 table; its light
+//                                        comes from the records, the coat is sampled.
 // Tables follow the BrdfDotBatch layout (host/sh/batches.h): 1-D over the parabolic radius for
 // isotropic BSDFs, 2-D parabolic for anisotropic ones. Tables and order choices are cached on
 // disk (brdf/table_cache.h). No cached material in the scene → nothing is built.
+#include <chrono>
 #include <functional>
 #include <map>
 #include <string>
@@ -29,10 +33,15 @@ namespace rc {
 
 // How a material's indirect light is estimated; shared by the plan and the cache engine (which
 // uses None for points that get no indirect light: inactive, or the back of a one-sided BSDF).
-enum class Technique { None, IrradianceCache, RadianceCache, ImportanceSampling };
+// LobeSplit: the base layer's reflected light from records (its table), the coat's by BSDF and
+// light sampling; the two estimates add up to the whole material's (Bsdf::baseLayer).
+enum class Technique { None, IrradianceCache, RadianceCache, ImportanceSampling, LobeSplit };
 
-inline bool isCached(Technique t) { return t == Technique::IrradianceCache || t == Technique::RadianceCache; }
-// "irradiance cache", "radiance cache", "importance sampling" (statistics), "none".
+// Whether points of the technique look their light up in records (LobeSplit: the base's part).
+inline bool isCached(Technique t) {
+  return t == Technique::IrradianceCache || t == Technique::RadianceCache || t == Technique::LobeSplit;
+}
+// "irradiance cache", "radiance cache", "importance sampling", "lobe split" (statistics), "none".
 const char* techniqueName(Technique t);
 
 struct MaterialPlan {
@@ -60,6 +69,7 @@ std::vector<float> alphaNodesOver(float lo, float hi);
 
 struct BrdfTableOptions {
   int orderOverride = 0;       // > 0: every glossy material is radiance-cached at this order
+  bool lobeSplit = true;       // false: layered BSDFs are planned whole (no "lobe split")
   // Order choice (brdf/order_selection.h): relative L2 truncation error allowed, worst over view
   // directions with θ_o ≤ planMaxThetaDeg. 10% of the norm = 1% of the lobe's energy outside the band.
   double tolerance = 0.10;
@@ -95,6 +105,7 @@ class BrdfTableSet {
   const std::vector<RcBrdfTable>& tables() const { return tables_; }
   const std::vector<float>& data() const { return data_; }  // flat storage, RcBrdfTable::offset
   int maxTableOrder() const;  // 0 when no table
+  bool anyLobeSplit() const;   // some material's plan is Technique::LobeSplit
 
   // Copies tables and data into a batch (material ids of the batch are table indices).
   void fillBatch(BrdfDotBatch& batch) const;
@@ -116,6 +127,13 @@ class BrdfTableSet {
   // The plan of a material tabulated over α (planMaterial per node).
   MaterialPlan planAlphaNodes(const Bsdf& bsdf, const BrdfTableOptions& opt, const BrdfDiskTables& disk,
                               std::map<std::string, int>& tableByKey);
+  // A layered BSDF: technique LobeSplit with its base layer's table.
+  MaterialPlan planLobeSplit(const Bsdf& bsdf, const BrdfTableOptions& opt, const BrdfDiskTables& disk,
+                             std::map<std::string, int>& tableByKey, std::chrono::steady_clock::time_point start);
+  // The table of `bsdf` at `order` into `plan` (shOrder, tableKind, tableIndex), shared with an
+  // earlier material of equal key; `hit` becomes false when built.
+  void addTable(const Bsdf& bsdf, const std::string& base, int order, int res, const BrdfTableOptions& opt,
+                const BrdfDiskTables& disk, std::map<std::string, int>& tableByKey, MaterialPlan& plan, bool& hit);
   std::vector<MaterialPlan> plans_;
   std::vector<RcBrdfTable> tables_;
   std::vector<float> data_;

@@ -80,6 +80,13 @@ class Bsdf {
   // default) means the BSDF is the same everywhere; use bsdfAt() below.
   virtual bool spatiallyVarying() const { return false; }
   virtual std::shared_ptr<const Bsdf> at(const Vec2& /*uv*/) const { return nullptr; }
+  // Layered BSDFs (a dielectric coat over a diffuse base: plastic, roughplastic) as two BSDFs of
+  // their own with eval = base.eval + coat.eval, each with its own pdf and sampling, so that an
+  // integrator can estimate the lobes by different techniques (rcache serves the low-frequency
+  // base from its records and samples the sharp coat). Both null when there is no such split;
+  // the parts live as long as this BSDF.
+  virtual const Bsdf* baseLayer() const { return nullptr; }
+  virtual const Bsdf* coatLayer() const { return nullptr; }
 
   // normalmap / bumpmap: the BSDF turns the shading frame. perturbedFrame() is that frame at a
   // surface point as a rotation of the unperturbed one (its axes in the unperturbed local

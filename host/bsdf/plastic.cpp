@@ -13,6 +13,9 @@
 // Fdr_int = fresnelDiffuseReflectance(1/η). Lobe choice: p_spec ∝ F(θo)·w_s, p_diff ∝ (1 − F(θo))·(1 − w_s),
 // w_s = mean(s)/(mean(ρ) + mean(s)). A texture on ρ or s makes the BSDF vary per point (Bsdf::at);
 // w_s stays that of the textures' means, as in Mitsuba.
+// Layers (Bsdf::baseLayer/coatLayer): the coat is the delta reflection s·F(θo) alone (always
+// sampled), the base f_d, cosine-sampled.
+#include "bsdf/bsdf_layer.h"
 #include "bsdf/bsdf_params.h"
 #include "bsdf/fresnel.h"
 #include "bsdf/plugins.h"
@@ -35,6 +38,7 @@ class PlasticBsdf final : public Bsdf {
     const float dMean = meanOf(diffuse), sMean = meanOf(specular);
     specularSamplingWeight_ = sMean / (dMean + sMean);
     setReflectances(diffuse, specular);
+    layers_.bind(*this, kLobeDelta);
   }
 
   Color eval(const Vec3& wo, const Vec3& wi) const override {
@@ -74,6 +78,29 @@ class PlasticBsdf final : public Bsdf {
            (specularTexture_ ? ";specular_texture=" + textureFingerprint(*specularTexture_) : "") + ")";
   }
   std::string typeName() const override { return "plastic"; }
+  const Bsdf* baseLayer() const override { return layers_.base.get(); }
+  const Bsdf* coatLayer() const override { return layers_.coat.get(); }
+  // The terms as BSDFs of their own (bsdf/bsdf_layer.h): the delta coat s·F(θo) always taken,
+  // the base cosine-sampled.
+  Color layerEval(bool coat, const Vec3& wo, const Vec3& wi) const { return coat ? Color(0.0f) : eval(wo, wi); }
+  float layerPdf(bool coat, const Vec3& /*wo*/, const Vec3& wi) const {
+    return coat ? 0.0f : squareToCosineHemispherePdf(wi);
+  }
+  std::optional<BsdfSample> layerSample(bool coat, const Vec3& wo, const Vec2& u2) const {
+    BsdfSample s;
+    if (coat) {
+      s.wi = reflectZ(wo);
+      s.weight = specular_ * fresnelDielectric(wo.z, eta_).r;
+      s.lobe = kLobeDelta;
+      return s;
+    }
+    s.wi = squareToCosineHemisphere(u2);
+    s.pdf = squareToCosineHemispherePdf(s.wi);
+    if (!(s.pdf > 0.0f)) return std::nullopt;
+    s.weight = eval(wo, s.wi) / s.pdf;
+    s.lobe = kLobeDiffuse;
+    return s;
+  }
 
   bool spatiallyVarying() const override { return diffuseTexture_ || specularTexture_; }
   BsdfPtr at(const Vec2& uv) const override {
@@ -82,6 +109,7 @@ class PlasticBsdf final : public Bsdf {
     point->diffuseTexture_ = point->specularTexture_ = nullptr;
     point->setReflectances(diffuseTexture_ ? diffuseTexture_->eval(uv) : diffuse_,
                            specularTexture_ ? specularTexture_->eval(uv) : specular_);
+    point->layers_.bind(*point, layers_.coat->lobes());
     return point;
   }
 
@@ -105,6 +133,7 @@ class PlasticBsdf final : public Bsdf {
   TexturePtr diffuseTexture_, specularTexture_;
   float invEta2_ = 1.0f, fdrInt_ = 0.0f, specularSamplingWeight_ = 0.5f;
   Color diffuseScaled_{0.0f};
+  BsdfLayers<PlasticBsdf> layers_;  // bound to this object (a copy binds its own)
 };
 
 }  // namespace

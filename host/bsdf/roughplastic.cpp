@@ -21,11 +21,15 @@
 // w_s = mean(s)/(mean(ρ) + mean(s)); the returned pdf is the mixture, weight = eval/pdf. A texture
 // on ρ or s makes the BSDF vary per point (Bsdf::at); w_s stays that of the textures' means and α
 // is a plain number, as in Mitsuba.
+// Layers (Bsdf::baseLayer/coatLayer): the coat is the first term, sampled by its microfacet
+// distribution alone; the base the second, cosine-sampled.
 #include <array>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <tuple>
 
+#include "bsdf/bsdf_layer.h"
 #include "bsdf/bsdf_params.h"
 #include "bsdf/fresnel.h"
 #include "bsdf/microfacet.h"
@@ -84,6 +88,7 @@ class RoughPlasticBsdf final : public Bsdf {
     tables_ = interfaceTables(distr, eta);
     internalReflectance_ = tables_->internalReflectance;
     setReflectances(diffuse, specular);
+    layers_.bind(*this, kLobeGlossy);
   }
 
   float externalTransmittance(float cosTheta) const {
@@ -98,32 +103,56 @@ class RoughPlasticBsdf final : public Bsdf {
 
   Color eval(const Vec3& wo, const Vec3& wi) const override {
     if (!(wo.z > 0.0f && wi.z > 0.0f)) return Color(0.0f);
+    return evalCoat(wo, wi) + evalBase(wo, wi);
+  }
+  // The two terms of eval, for wo.z > 0 and wi.z > 0.
+  Color evalCoat(const Vec3& wo, const Vec3& wi) const {
     const Vec3 h = glm::normalize(wo + wi);
     const float d = distr_.D(h);
     const float f = fresnelDielectric(glm::dot(wo, h), eta_).r;
     const float g = distr_.G(wo, wi, h);
-    Color value = specular_ * (f * d * g / (4.0f * wo.z));
+    return specular_ * (f * d * g / (4.0f * wo.z));
+  }
+  Color evalBase(const Vec3& wo, const Vec3& wi) const {
     const float to = externalTransmittance(wo.z), ti = externalTransmittance(wi.z);
-    value += diffuseScaled_ * (kInvPi * invEta2_ * wi.z * to * ti);
-    return value;
+    return diffuseScaled_ * (kInvPi * invEta2_ * wi.z * to * ti);
   }
 
   float pdf(const Vec3& wo, const Vec3& wi) const override {
     if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
     const float pSpec = probSpecular(wo.z), pDiff = 1.0f - pSpec;
+    return pSpec * pdfCoat(wo, wi) + pDiff * squareToCosineHemispherePdf(wi);
+  }
+  // Density of the coat's microfacet sampling alone (wo.z > 0, wi.z > 0).
+  float pdfCoat(const Vec3& wo, const Vec3& wi) const {
     const Vec3 h = glm::normalize(wo + wi);
-    float spec;
-    if (distr_.sampleVisible()) spec = distr_.D(h) * distr_.smithG1(wo, h) / (4.0f * wo.z);
-    else spec = distr_.pdf(wo, h) / (4.0f * glm::dot(wi, h));
-    return pSpec * spec + pDiff * squareToCosineHemispherePdf(wi);
+    if (distr_.sampleVisible()) return distr_.D(h) * distr_.smithG1(wo, h) / (4.0f * wo.z);
+    return distr_.pdf(wo, h) / (4.0f * glm::dot(wi, h));
+  }
+  Vec3 sampleCoat(const Vec3& wo, const Vec2& u2) const { return reflectAbout(wo, distr_.sample(wo, u2).first); }
+
+  // The terms as BSDFs of their own (bsdf/bsdf_layer.h): the coat sampled by its distribution,
+  // the base by the cosine.
+  Color layerEval(bool coat, const Vec3& wo, const Vec3& wi) const { return coat ? evalCoat(wo, wi) : evalBase(wo, wi); }
+  float layerPdf(bool coat, const Vec3& wo, const Vec3& wi) const {
+    return coat ? pdfCoat(wo, wi) : squareToCosineHemispherePdf(wi);
+  }
+  std::optional<BsdfSample> layerSample(bool coat, const Vec3& wo, const Vec2& u2) const {
+    BsdfSample s;
+    s.wi = coat ? sampleCoat(wo, u2) : squareToCosineHemisphere(u2);
+    s.lobe = coat ? kLobeGlossy : kLobeDiffuse;
+    if (!(s.wi.z > 0.0f)) return std::nullopt;
+    s.pdf = layerPdf(coat, wo, s.wi);
+    if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return std::nullopt;
+    s.weight = layerEval(coat, wo, s.wi) / s.pdf;
+    return s;
   }
 
   std::optional<BsdfSample> sample(const Vec3& wo, float u1, const Vec2& u2) const override {
     if (!(wo.z > 0.0f)) return std::nullopt;
     BsdfSample s;
     if (u1 < probSpecular(wo.z)) {
-      const Vec3 m = distr_.sample(wo, u2).first;
-      s.wi = reflectAbout(wo, m);
+      s.wi = sampleCoat(wo, u2);
       s.lobe = kLobeGlossy;
     } else {
       s.wi = squareToCosineHemisphere(u2);
@@ -145,6 +174,8 @@ class RoughPlasticBsdf final : public Bsdf {
            (specularTexture_ ? ";specular_texture=" + textureFingerprint(*specularTexture_) : "") + ")";
   }
   std::string typeName() const override { return "roughplastic"; }
+  const Bsdf* baseLayer() const override { return layers_.base.get(); }
+  const Bsdf* coatLayer() const override { return layers_.coat.get(); }
 
   bool spatiallyVarying() const override { return diffuseTexture_ || specularTexture_; }
   BsdfPtr at(const Vec2& uv) const override {
@@ -153,6 +184,7 @@ class RoughPlasticBsdf final : public Bsdf {
     point->diffuseTexture_ = point->specularTexture_ = nullptr;
     point->setReflectances(diffuseTexture_ ? diffuseTexture_->eval(uv) : diffuse_,
                            specularTexture_ ? specularTexture_->eval(uv) : specular_);
+    point->layers_.bind(*point, layers_.coat->lobes());
     return point;
   }
 
@@ -180,6 +212,7 @@ class RoughPlasticBsdf final : public Bsdf {
   float invEta2_ = 1.0f, specularSamplingWeight_ = 0.5f, internalReflectance_ = 0.0f;
   std::shared_ptr<const InterfaceTables> tables_;
   Color diffuseScaled_{0.0f};
+  BsdfLayers<RoughPlasticBsdf> layers_;  // bound to this object (a copy binds its own)
 };
 
 }  // namespace

@@ -137,8 +137,17 @@ Technique CacheEngine::technique(const ShadePoint& sp) const {
   if (isCached(t)) {
     if (sp.wo.z <= 0.0f) return Technique::None;  // back of a one-sided BSDF: black
     if (sp.level >= params_.cacheDepth) return Technique::ImportanceSampling;
+    if (t == Technique::LobeSplit && (sp.level > 0 || !lobeSplitOn_)) return Technique::ImportanceSampling;
   }
   return t;
+}
+
+Color CacheEngine::lobeSplitDirect(const ShadePoint& sp, Rng& rng, int lightSamples) const {
+  const Bsdf& bsdf = *ctx_.scene.bsdfs[static_cast<size_t>(sp.hit.bsdf)];
+  const int n = std::max(1, lightSamples);
+  Color base(0.0f);
+  for (int k = 0; k < n; ++k) base += directLightLightOnly(directLightContext(sp), sp.hit, sp.frame, sp.wo, *bsdf.baseLayer(), rng);
+  return base / float(n) + lightStrategyMis(ctx_, sp.hit, sp.frame, sp.wo, *bsdf.coatLayer(), rng, lightSamples);
 }
 
 bool CacheEngine::hasIndirect(const ShadePoint& sp) const {
@@ -182,6 +191,12 @@ void CacheEngine::radianceOut(PointView pts, std::vector<Color>& out, float rela
       const bool continues = continuesPath(sp);
       BsdfPtr& pointBsdf = batch.holders.emplace_back();  // a spatially varying BSDF at this point (Bsdf::at)
       const Bsdf& bsdf = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf);
+      if (technique(sp) == Technique::LobeSplit) {  // a camera path's vertex behind delta bounces
+        Rng rng = shadePointRng(sp, 1);
+        const Color L = lobeSplitDirect(sp, rng, sp.lightSamples);
+        if (isFinite(L)) out[i] = L;
+        continue;
+      }
       batch.jobs.push_back({&directLightContext(sp), &sp.hit, sp.frame, sp.wo, &bsdf,
                       continues ? Rng(sp.seed, 1) : shadePointRng(sp, 1),
                       continues               ? DirectEstimator::LightStrategy
@@ -207,7 +222,7 @@ void CacheEngine::radianceOut(PointView pts, std::vector<Color>& out, float rela
 }
 
 void CacheEngine::indirect(PointView pts, std::vector<Color>& out, std::vector<LookupAov>* aov,
-                           float relaxedScale) {
+                           float relaxedScale, bool withCoat) {
   out.assign(pts.size(), Color(0.0f));
   if (aov) aov->assign(pts.size(), LookupAov{});
   // Classify in parallel (technique and cache key per point), then group by the few distinct keys
@@ -222,8 +237,9 @@ void CacheEngine::indirect(PointView pts, std::vector<Color>& out, std::vector<L
       if (isCached(tech[i])) keys[i] = keyFor(sp);
     }
   });
-  const std::vector<size_t> sampled =
-      parallelSelect(pts.size(), [&](size_t i) { return tech[i] == Technique::ImportanceSampling; });
+  const std::vector<size_t> sampled = parallelSelect(pts.size(), [&](size_t i) {
+    return tech[i] == Technique::ImportanceSampling || (withCoat && tech[i] == Technique::LobeSplit);
+  });
   const std::map<CacheKey, std::vector<size_t>> groups = groupByKey(tech, keys);
   for (auto& group : groups) {
     // Named references, not a structured binding: C++17 lambdas cannot capture those (clang).
@@ -266,9 +282,16 @@ void CacheEngine::indirect(PointView pts, std::vector<Color>& out, std::vector<L
     // Paths continued below a sharp surface keep the relaxed lookups of the final pass.
     continuePaths(sub, L, relaxedScale);
     parallelFor(sampled.size(), 4096, [&](size_t b, size_t e) {
-      for (size_t j = b; j < e; ++j) out[sampled[j]] = L[j];
+      for (size_t j = b; j < e; ++j) out[sampled[j]] += L[j];  // a lobe split's base is there already
     });
   }
+}
+
+void CacheEngine::coatIndirect(PointView pts, std::vector<Color>& out, float relaxedScale) {
+  for (size_t i = 0; i < pts.size(); ++i)
+    if (!hasIndirect(pts[i]) || technique(pts[i]) != Technique::LobeSplit)
+      throw Error("coatIndirect: a point that is not lobe-split");
+  continuePaths(pts, out, relaxedScale);
 }
 
 void CacheEngine::fill(const std::vector<ShadePoint>& pts, const std::vector<float>& baseLum, bool adaptive) {
@@ -911,7 +934,10 @@ void CacheEngine::continuePaths(PointView pts, std::vector<Color>& out, float re
       const Vec2 u = rng.next2D();
       const float uLobe = rng.nextFloat();
       BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
-      const auto s = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf).sample(sp.wo, uLobe, u);
+      const Bsdf& whole = bsdfAt(*ctx_.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf);
+      // A lobe-split point's base light came from records: only its coat continues.
+      const Bsdf& sampled = technique(sp) == Technique::LobeSplit ? *whole.coatLayer() : whole;
+      const auto s = sampled.sample(sp.wo, uLobe, u);
       if (!s || !isFinite(s->weight) || maxComponent(s->weight) <= 0.0f) continue;
       Color w = s->weight;
       if (sp.depth >= rrDepth_) {

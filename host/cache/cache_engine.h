@@ -70,8 +70,16 @@ class CacheEngine {
   // Indirect part only; `aov` (optional, same size) receives lookup details.
   // relaxedScale > 1 (the final pass): a point no record covers at a_i may use the records that
   // cover it at relaxedScale·a_i before a new record is made for it.
+  // withCoat = false leaves out the coat of lobe-split points (the caller adds coatIndirect).
   void indirect(PointView points, std::vector<Color>& out, std::vector<LookupAov>* aov = nullptr,
-                float relaxedScale = 1.0f);
+                float relaxedScale = 1.0f, bool withCoat = true);
+  // The coat's indirect light of lobe-split points (technique LobeSplit): one coat BSDF sample,
+  // the path continued at its hit (also the coat's MIS BSDF sample for lobeSplitDirect).
+  void coatIndirect(PointView points, std::vector<Color>& out, float relaxedScale = 1.0f);
+  // Direct light of a lobe-split point: the base by light sampling alone over
+  // directLightContext(sp) (its cached share of the environment comes with the records), the coat
+  // by lightStrategyMis over the scene's lights. Consumes 3·lightSamples + 3 numbers.
+  Color lobeSplitDirect(const ShadePoint& sp, Rng& rng, int lightSamples) const;
   // Fill pass at level 0: make the caches cover `points`; with adaptive caching, `baseLum`
   // (luminance of the points' direct light + emission) scales the Weber threshold.
   void fill(const std::vector<ShadePoint>& points, const std::vector<float>& baseLum, bool adaptive);
@@ -82,10 +90,13 @@ class CacheEngine {
     const bool two = known && twoSided_[static_cast<size_t>(hit.bsdf)];
     return makeShadePoint(hit, dir, depth, level, seed, two, known ? ctx_.scene.bsdfs[static_cast<size_t>(hit.bsdf)].get() : nullptr);
   }
-  // Technique of a point: its material's (irradiance/radiance cache, importance sampling), None
-  // for points without indirect light, and importance sampling for cached materials past
-  // cache_depth.
+  // Technique of a point: its material's (irradiance/radiance cache, importance sampling, lobe
+  // split), None for points without indirect light, and importance sampling for cached materials
+  // past cache_depth and for lobe-split materials below the camera's hits (level > 0: the whole
+  // BSDF is sampled there, as in the path tracer; records average that noise).
   Technique technique(const ShadePoint& sp) const;
+  // false: lobe-split materials are importance-sampled whole (the cost pilot's choice).
+  void setLobeSplit(bool on) { lobeSplitOn_ = on; }
   // Whether indirect() continues a path from sp by BSDF sampling (importance sampling within the
   // depth limits). Such a point takes only the light half of its direct light (lightStrategyMis): the
   // continuation ray is also its MIS BSDF sample and adds the emitter it hits, as in the path
@@ -123,6 +134,7 @@ class CacheEngine {
   Vec3 lo_, hi_;
   std::vector<Technique> planTech_;  // per bsdf: a cached technique with a table, else sampling
   std::vector<int> planOrder_;  // per bsdf: record order
+  bool lobeSplitOn_ = true;     // setLobeSplit
   std::vector<bool> twoSided_;
   std::map<CacheKey, std::unique_ptr<RadianceCache>> caches_;
   std::unique_ptr<LightSplit> envSplit_;

@@ -58,6 +58,12 @@ RcacheParams readRcacheParams(ParamReader& in) {
   p.areaCache = in.flag("area_cache", p.areaCache);
   p.fallback = in.flag("fallback", p.fallback);
   p.fallbackShare = in.real("fallback_share", p.fallbackShare, 0.0f, 1.0f);
+  const std::string split = in.choice("lobe_split", "auto", {"auto", "true", "false"});
+  p.lobeSplit = split == "auto"   ? RcacheParams::LobeSplitMode::Auto
+                : split == "true" ? RcacheParams::LobeSplitMode::On
+                                  : RcacheParams::LobeSplitMode::Off;
+  p.costPilot = in.flag("cost_pilot", p.costPilot);
+  p.costPilotShare = in.real("cost_pilot_share", p.costPilotShare, 0.0f, 1e6f);
   const std::string frame = in.choice("frame", "auto", {"auto", "world", "record"});
   p.worldFrame = frame != "record";
   p.autoFrame = frame == "auto";

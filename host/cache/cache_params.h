@@ -35,6 +35,10 @@ struct RcacheParams {
   struct FollowBudget {
     bool rays = true, secondaryRays = true, a = true, rMin = true, rMax = true;
   } follow;
+  // Lobe split of layered materials (Technique::LobeSplit): Auto lets the cost pilot choose.
+  enum class LobeSplitMode { Auto, On, Off } lobeSplit = LobeSplitMode::Auto;
+  bool costPilot = true;
+  float costPilotShare = 0.05f;  // the cost pilot's budget, a share of the path-traced render
 };
 
 // Throws rc::Error("parameter 'x' = '...': ...") for a malformed or out-of-range value.

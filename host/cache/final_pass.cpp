@@ -182,7 +182,20 @@ void FinalPass::shadeSamples(int y0, const SampleRange* ranges, size_t pixels, T
   });
   std::vector<Color> repIndirect;
   std::vector<LookupAov> repAov;
-  run_.engine.indirect(repPts, repIndirect, &repAov, kFinalRelaxedScale);
+  // Lobe-split points share the lookup of their base like any cached point; their coat's
+  // continuation stays per sample, added to the sample's own (direct) term.
+  run_.engine.indirect(repPts, repIndirect, &repAov, kFinalRelaxedScale, false);
+  std::vector<size_t> split;
+  for (size_t i = 0; i < n; ++i)
+    if (s.lobeSplit[i]) split.push_back(i);
+  if (!split.empty()) {
+    std::vector<ShadePoint> coatPts(split.size());
+    for (size_t j = 0; j < split.size(); ++j) coatPts[j] = s.prim[split[j]].sp;
+    std::vector<Color> coat;
+    run_.engine.coatIndirect(coatPts, coat, kFinalRelaxedScale);
+    for (size_t j = 0; j < split.size(); ++j) s.direct[split[j]] += coat[j];
+    lobeSplitSamples_ += split.size();
+  }
   splat(s, repIndirect, repAov, slot, tile);
 }
 
@@ -205,6 +218,7 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
   s.direct.assign(n, Color(0.0f));
   s.sampleIndex.resize(n);
   s.rep.resize(n);
+  s.lobeSplit.assign(n, 0);
   parallelFor(active.size(), 16, [&](size_t jb, size_t je) {
     std::vector<uint32_t> pixelReps;
     std::vector<int> repShares;  // samples using each representative's lookup
@@ -240,6 +254,11 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
         // Importance-sampled points: the continuation's ray doubles as the BSDF sample
         // (lightStrategyMis); the others take directLightCheapest's estimator.
         const RenderContext& lights = run_.engine.directLightContext(sp);
+        s.lobeSplit[i] = run_.engine.hasIndirect(sp) && run_.engine.technique(sp) == Technique::LobeSplit;
+        if (s.lobeSplit[i]) {  // the base lobe's light and the coat's own: outside the batch
+          s.direct[i] = run_.engine.lobeSplitDirect(sp, rngs[k], params.lightSamples);
+          continue;
+        }
         const bool continues = run_.engine.continuesPath(sp);
         const bool lightOnly = !continues && cheapestIsLightOnly(lights, sp.hit, bsdf, params.lightSamples);
         if (lightOnly) ++lightOnlyCount;
@@ -349,6 +368,7 @@ void FinalPass::splat(const Samples& s, const std::vector<Color>& repIndirect, c
       const Color c = t == Technique::ImportanceSampling ? Color(1, 0, 0)
                       : t == Technique::IrradianceCache  ? Color(0, 1, 0)
                       : t == Technique::RadianceCache    ? Color(0, 0, 1)
+                      : t == Technique::LobeSplit        ? Color(1, 0, 1)
                                                          : Color(0.0f);
       tile.addAov("technique", px, py, c);
     }

@@ -20,7 +20,7 @@ namespace rc {
 struct RcacheAovs {
   bool records = false;       // per pixel: records whose primary hit lies there
   bool radius = false;        // per sample: mean a_i and mean radius (px) of the contributing records
-  bool technique = false;     // red: BSDF sampling, green: irradiance cache, blue: radiance cache
+  bool technique = false;     // red: BSDF sampling, green: irradiance cache, blue: radiance cache, magenta: lobe split
   bool contributors = false;  // per sample: records contributing to its lookup
 };
 // Throws rc::Error naming the unknown AOV and the known ones.
@@ -49,6 +49,7 @@ class FinalPass {
   uint64_t cameraRays() const { return cameraRays_; }
   uint64_t nanSamples() const { return nanSamples_; }
   uint64_t directLightOnly() const { return directLightOnly_.load(); }
+  uint64_t lobeSplitSamples() const { return lobeSplitSamples_; }
   int bandsReshaded() const { return reshaded_; }
 
  private:
@@ -58,6 +59,7 @@ class FinalPass {
     std::vector<Color> direct;
     std::vector<int> sampleIndex;
     std::vector<uint32_t> rep;
+    std::vector<char> lobeSplit;  // technique LobeSplit: the coat's continuation is added per sample
   };
   void traceAndLight(int y0, const SampleRange* ranges, const std::vector<size_t>& offset,
                      const std::vector<uint32_t>& active, Samples& s);
@@ -70,7 +72,7 @@ class FinalPass {
   AdaptivePixels& adaptive_;
   int rowsPerBand_ = 1, bands_ = 0;
   std::vector<std::unique_ptr<TileFilm>> bandFilms_;
-  uint64_t cameraRays_ = 0, nanSamples_ = 0;
+  uint64_t cameraRays_ = 0, nanSamples_ = 0, lobeSplitSamples_ = 0;
   std::atomic<uint64_t> directLightOnly_{0};  // samples whose direct light skipped the BSDF ray
   int reshaded_ = 0;
 };

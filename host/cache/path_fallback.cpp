@@ -17,6 +17,35 @@ namespace {
 // 1 %, for a cost of a few thousand rays (well under a percent of one spp at 256²).
 constexpr size_t kPilotPoints = 4096;
 
+struct ServedShare {
+  float share = 0.0f;      // of the point's reflected light that records serve
+  bool lobeSplit = false;  // served through a lobe split's base
+};
+
+// A cached point is served whole; a lobe-split point for its base's part of what it reflects,
+// estimated from one sample of the whole BSDF as f_base/f there (E over the BSDF's sampling ≈
+// the base's share of the albedo; a delta coat sample counts 0).
+ServedShare servedShare(const RcacheRun& run, const ShadePoint& sp, Rng& rng) {
+  ServedShare s;
+  const CacheEngine& engine = run.engine;
+  if (!sp.active || !engine.hasIndirect(sp)) return s;
+  const Technique t = engine.technique(sp);
+  if (!isCached(t)) return s;
+  if (t != Technique::LobeSplit) {
+    s.share = 1.0f;
+    return s;
+  }
+  s.lobeSplit = true;
+  const Bsdf& bsdf = *run.ctx.scene.bsdfs[sp.hit.bsdf];
+  const Vec2 u = rng.next2D();
+  const std::optional<BsdfSample> bs = bsdf.sample(sp.wo, rng.nextFloat(), u);
+  if (!bs) return s;
+  const float whole = luminance(bsdf.eval(sp.wo, bs->wi));
+  if (whole > 0.0f && std::isfinite(whole))
+    s.share = std::clamp(luminance(bsdf.baseLayer()->eval(sp.wo, bs->wi)) / whole, 0.0f, 1.0f);
+  return s;
+}
+
 }  // namespace
 
 FallbackDecision decideFallback(const RcacheRun& run) {
@@ -42,19 +71,21 @@ FallbackDecision decideFallback(const RcacheRun& run) {
   std::vector<Primary> prim;
   run.primaries.trace(filmPos, pixel, seeds, prim);
   const CacheEngine& engine = run.engine;
-  auto served = [&](const ShadePoint& sp) { return sp.active && engine.hasIndirect(sp) && isCached(engine.technique(sp)); };
-  std::vector<char> hit(prim.size(), 0), serves(prim.size(), 0);
+  std::vector<char> hit(prim.size(), 0);
+  std::vector<float> serves(prim.size(), 0.0f), splitServes(prim.size(), 0.0f);
   parallelFor(prim.size(), 64, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
       const ShadePoint& sp = prim[i].sp;
       if (!sp.active) continue;
       hit[i] = 1;
-      if (served(sp)) {
-        serves[i] = 1;
+      Rng rng(sp.seed, 0);
+      const ServedShare own = servedShare(run, sp, rng);
+      if (own.share > 0.0f) {
+        serves[i] = own.share;
+        if (own.lobeSplit) splitServes[i] = own.share;
         continue;
       }
       if (!engine.continuesPath(sp)) continue;
-      Rng rng(sp.seed, 0);
       const Vec2 u = rng.next2D();
       BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
       const std::optional<BsdfSample> bs =
@@ -63,21 +94,28 @@ FallbackDecision decideFallback(const RcacheRun& run) {
       const Vec3 dir = sp.frame.toWorld(bs->wi);
       const Hit next = run.ctx.accel.intersect(Accel::spawnRay(sp.hit, dir));
       const bool delta = (bs->lobe & kLobeDelta) != 0;
-      serves[i] = served(engine.shadePointOf(next, dir, sp.depth + 1, sp.level + (delta ? 0 : 1), sp.seed)) ? 1 : 0;
+      const ServedShare below =
+          servedShare(run, engine.shadePointOf(next, dir, sp.depth + 1, sp.level + (delta ? 0 : 1), sp.seed), rng);
+      serves[i] = below.share;
+      if (below.lobeSplit) splitServes[i] = below.share;
     }
   });
-  size_t hits = 0, servedCount = 0;
-  for (size_t i = 0; i < prim.size(); ++i) hits += hit[i], servedCount += serves[i];
+  size_t hits = 0;
+  double servedSum = 0.0, splitSum = 0.0;
+  for (size_t i = 0; i < prim.size(); ++i) hits += hit[i], servedSum += serves[i], splitSum += splitServes[i];
   d.pilotPoints = hits;
   if (hits == 0) {
     d.reason = "nothing hit";
     return d;
   }
-  d.servedShare = double(servedCount) / double(hits);
+  d.servedShare = servedSum / double(hits);
+  d.lobeSplitShare = splitSum / double(hits);
   d.pathTrace = d.servedShare < run.params.fallbackShare;
-  char buf[160];
-  std::snprintf(buf, sizeof(buf), "%s: the cache would serve %.1f %% of %zu pilot points (threshold %.0f %%)",
-                d.pathTrace ? "path traced" : "cached", 100.0 * d.servedShare, hits, 100.0 * run.params.fallbackShare);
+  char buf[200];
+  std::snprintf(buf, sizeof(buf),
+                "%s: the cache would serve %.1f %% of %zu pilot points (%.1f %% through lobe splits; threshold %.0f %%)",
+                d.pathTrace ? "path traced" : "cached", 100.0 * d.servedShare, hits, 100.0 * d.lobeSplitShare,
+                100.0 * run.params.fallbackShare);
   d.reason = buf;
   return d;
 }

@@ -4,7 +4,8 @@
 // centres (about kPilotPoints, over the whole sensor even when a crop window is rendered, so a tile
 // decides as the full image does) and one BSDF continuation below each point rendered by importance
 // sampling; a point counts as served by the cache when its own material is cached, or when its
-// continuation lands on a cached material (its reflected light then comes from records). The
+// continuation lands on a cached material (its reflected light then comes from records); a
+// lobe-split material counts for its base's share of the light it reflects. The
 // cache only lowers the noise of that share s of the image, at a fill cost and a per-sample
 // overhead o of the batched final pass over the path tracer, so at equal time it wins at most
 // (1 − s + s·r)(1 + o) ≥ (1 − s)(1 + o) of the path tracer's error (r: its remaining error
@@ -21,6 +22,7 @@ namespace rc {
 struct FallbackDecision {
   bool pathTrace = false;
   double servedShare = 0.0;  // s: pilot points (with a surface hit) the cache would serve
+  double lobeSplitShare = 0.0;  // the part of s served through lobe-split materials' bases
   size_t pilotPoints = 0;    // pilot camera rays that hit a surface
   std::string reason;        // for the statistics
 };

@@ -10,6 +10,7 @@
 #include "cache/cache_file.h"
 #include "cache/cache_fill.h"
 #include "cache/cache_params.h"
+#include "cache/cost_pilot.h"
 #include "cache/final_pass.h"
 #include "cache/final_pass_memory.h"
 #include "cache/path_fallback.h"
@@ -36,6 +37,7 @@ namespace {
 void buildTables(const Scene& scene, const RcacheParams& params, RenderStats& stats, BrdfTableSet& tables) {
   BrdfTableOptions options;
   options.orderOverride = params.order;
+  options.lobeSplit = params.lobeSplit != RcacheParams::LobeSplitMode::Off;
   options.notice = [&](const std::string& msg) { stats.setText("brdf_notice", msg); };
   tables.build(scene.bsdfs, options);
 }
@@ -78,6 +80,9 @@ class RcachePasses final : public PassRender {
   Image finish(const Film& film, int passes, bool stopped, RenderStats& stats) override;
 
  private:
+  // Phase 0: the share pilot (cache/path_fallback.h), with and without the lobe split, then the
+  // cost pilot (cache/cost_pilot.h) among the path tracer and the variants the share pilot keeps.
+  void chooseTechnique(const Vec3& lo, const Vec3& hi);
   const RenderContext& ctx_;
   const IntegratorSettings& settings_;
   const int spp_;
@@ -94,6 +99,7 @@ class RcachePasses final : public PassRender {
   std::unique_ptr<PrimaryHits> primaries_;
   std::unique_ptr<RcacheRun> run_;
   FallbackDecision fallback_;
+  CostPilotReport cost_;
   std::unique_ptr<Integrator> pathIntegrator_;  // the pilot chose path tracing: it renders the passes
   std::unique_ptr<PassRender> pathPasses_;
   size_t recordsLoaded_ = 0;
@@ -125,7 +131,7 @@ RcachePasses::RcachePasses(const RenderContext& ctx, const IntegratorSettings& s
                            film.height(), spp_, scene.samplerSeed + ctx.options.seed, usesLowDiscrepancy(ctx)});
 
   // Phase 0: a pilot decides whether the cache can pay here at all (cache/path_fallback.h).
-  fallback_ = decideFallback(*run_);
+  chooseTechnique(lo, hi);
   if (fallback_.pathTrace) {
     pathIntegrator_ = makePathIntegrator(settings_);
     pathPasses_ = pathIntegrator_->beginPasses(ctx, stats);
@@ -139,6 +145,42 @@ RcachePasses::RcachePasses(const RenderContext& ctx, const IntegratorSettings& s
   // --cache-reuse (walk-throughs, distributed fills): the loaded records stay as they are and the
   // fill adds records only where this view finds none.
   if (files_.load.empty() || files_.reuse) fill_ = fillCache(*run_);
+}
+
+// lobe_split=auto: the share pilot's verdict without the split is the default (the split loses at
+// equal time where the fill does not pay, bench/RESULTS.md); the cost pilot may choose the split,
+// rcache or the path tracer instead, among the variants whose pilot fits its budget.
+void RcachePasses::chooseTechnique(const Vec3& lo, const Vec3& hi) {
+  using Mode = RcacheParams::LobeSplitMode;
+  const bool anySplit = params_.lobeSplit != Mode::Off && tables_.anyLobeSplit();
+  engine_->setLobeSplit(params_.lobeSplit == Mode::On);
+  fallback_ = decideFallback(*run_);
+  FallbackDecision withSplit;
+  if (params_.lobeSplit == Mode::Auto && anySplit) {
+    engine_->setLobeSplit(true);
+    withSplit = decideFallback(*run_);
+    engine_->setLobeSplit(false);
+  }
+  if (!params_.costPilot || fallback_.pilotPoints == 0) return;
+  std::vector<CandidateKind> kinds;
+  if (!fallback_.pathTrace)
+    kinds.push_back(params_.lobeSplit == Mode::On && anySplit ? CandidateKind::RcacheLobeSplit : CandidateKind::Rcache);
+  if (withSplit.pilotPoints > 0 && !withSplit.pathTrace) kinds.push_back(CandidateKind::RcacheLobeSplit);
+  if (kinds.empty()) return;
+  cost_ = runCostPilot({ctx_, settings_, params_, tables_, backend_, lo, hi, spp_, run_->seed, run_->lowDiscrepancy,
+                        kinds});
+  if (!cost_.ran || cost_.choice.candidates.size() < 2) return;  // no variant fit: the default stands
+  const CandidateKind chosen = cost_.choice.candidates[static_cast<size_t>(cost_.choice.chosen)].kind;
+  if (chosen == CandidateKind::RcacheLobeSplit && params_.lobeSplit == Mode::Auto) {
+    fallback_ = withSplit;
+    engine_->setLobeSplit(true);
+  }
+  if (chosen == CandidateKind::PathTracer) {
+    fallback_.pathTrace = true;
+    fallback_.reason = "path traced by the cost pilot (" + fallback_.reason + ")";
+  } else {
+    fallback_.pathTrace = false;
+  }
 }
 
 bool RcachePasses::addPass(Film& film, int firstSample) {
@@ -162,6 +204,8 @@ Image RcachePasses::finish(const Film& film, int passes, bool stopped, RenderSta
     Image img = pathPasses_->finish(film, passes, stopped, stats);
     stats.setText("fallback", fallback_.reason);
     stats.set("pilot_served_share", fallback_.servedShare);
+    stats.set("pilot_lobe_split_share", fallback_.lobeSplitShare);
+    reportCostPilot(cost_, stats);
     return img;
   }
   Image img = film.develop();
@@ -180,6 +224,8 @@ Image RcachePasses::finish(const Film& film, int passes, bool stopped, RenderSta
                     stats);
   stats.setText("fallback", fallback_.reason);
   if (fallback_.pilotPoints > 0) stats.set("pilot_served_share", fallback_.servedShare);
+  if (fallback_.pilotPoints > 0) stats.set("pilot_lobe_split_share", fallback_.lobeSplitShare);
+  reportCostPilot(cost_, stats);
   if (recordsLoaded_ > 0) stats.set("records_too_coarse", double(recordsSkipped_));
   return img;
 }

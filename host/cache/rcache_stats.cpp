@@ -12,6 +12,7 @@ void FinalPassTotals::add(const FinalPass& pass, const AdaptivePixels& adaptive)
   cameraRays += pass.cameraRays();
   nanSamples += pass.nanSamples();
   directLightOnly += pass.directLightOnly();
+  lobeSplitSamples += pass.lobeSplitSamples();
   bandsReshaded += pass.bandsReshaded();
   samples += adaptive.totalSamples();
   pixelsAboveSpp += adaptive.pixelsAboveSpp();
@@ -80,6 +81,7 @@ void reportRaysAndLookups(const RcacheRun& run, const RcacheReport& r, RenderSta
   stats.set("samples_dropped_nan", double(es.droppedSamples.load() + r.passes.nanSamples));
   stats.set("bands_reshaded", double(r.passes.bandsReshaded));
   stats.set("direct_light_only_fraction", cameraRays ? double(r.passes.directLightOnly) / double(cameraRays) : 0.0);
+  stats.set("lobe_split_fraction", cameraRays ? double(r.passes.lobeSplitSamples) / double(cameraRays) : 0.0);
 }
 
 void reportKernels(const RcacheRun& run, RenderStats& stats) {

@@ -11,7 +11,7 @@ namespace rc {
 
 // What the final passes did, summed over the passes of a render.
 struct FinalPassTotals {
-  uint64_t cameraRays = 0, nanSamples = 0, directLightOnly = 0, samples = 0, pixelsAboveSpp = 0;
+  uint64_t cameraRays = 0, nanSamples = 0, directLightOnly = 0, lobeSplitSamples = 0, samples = 0, pixelsAboveSpp = 0;
   int bandsReshaded = 0, maxPixelSamples = 0;
   void add(const FinalPass& pass, const AdaptivePixels& adaptive);
 };

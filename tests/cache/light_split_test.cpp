@@ -13,35 +13,11 @@
 namespace rc {
 namespace {
 
-constexpr int kEnvW = 64, kEnvH = 33;
-
+using test::kEnvH;
+using test::kEnvW;
+using test::skyEmitter;
+using test::skyTexels;
 using test::statText;
-
-// A sky: luminance rising toward the zenith, dark ground below the horizon, optionally a sun
-// (a 2×2-texel block `sunLum` bright, 30° above the horizon).
-std::vector<Color> skyTexels(float sunLum) {
-  std::vector<Color> px(static_cast<size_t>(kEnvW) * kEnvH);
-  for (int y = 0; y < kEnvH; ++y)
-    for (int x = 0; x < kEnvW; ++x) {
-      const float cosTheta = std::cos(kPi * y / (kEnvH - 1));
-      px[static_cast<size_t>(y) * kEnvW + x] =
-          cosTheta > 0.0f ? Color(0.6f, 0.8f, 1.2f) * (0.5f + cosTheta) : Color(0.08f, 0.07f, 0.06f);
-    }
-  if (sunLum > 0.0f)
-    for (int y = 10; y < 12; ++y)
-      for (int x = 20; x < 22; ++x) px[static_cast<size_t>(y) * kEnvW + x] = Color(sunLum);
-  return px;
-}
-
-Emitter skyEmitter(float sunLum) {
-  Emitter e;
-  e.type = EmitterType::Envmap;
-  e.filename = "synthetic-sky";
-  e.envWidth = kEnvW;
-  e.envHeight = kEnvH;
-  e.envPixels = skyTexels(sunLum);
-  return e;
-}
 
 TEST(LightSplit, UniformMapIsCachedWholeAndSunIsSplitOff) {
   const std::vector<Color> uniform(static_cast<size_t>(kEnvW) * kEnvH, Color(2.0f));

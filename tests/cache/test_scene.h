@@ -2,6 +2,7 @@
 // Small programmatic scenes and a render helper for the cache tests (no scene files needed, so
 // these tests pin the integrator, not the parser). A Cornell-like box: glossy (or diffuse) floor,
 // coloured diffuse walls, a square area light under the ceiling, camera looking in.
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,6 +25,18 @@ inline BsdfPtr diffuse(float r, float g, float b) {
   Properties props;
   props.pluginType = "diffuse";
   props.set("reflectance", rgbProp(r, g, b));
+  return createBsdf(props, {});
+}
+
+// "plastic" (alpha unused) or "roughplastic" (GGX α) over a diffuse base of reflectance `base`.
+inline BsdfPtr layeredPlastic(const std::string& type, float alpha, Color base) {
+  Properties props;
+  props.pluginType = type;
+  if (type == "roughplastic") {
+    props.set("distribution", stringProp("ggx"));
+    props.set("alpha", floatProp(alpha));
+  }
+  props.set("diffuse_reflectance", rgbProp(base.r, base.g, base.b));
   return createBsdf(props, {});
 }
 
@@ -154,6 +167,32 @@ inline std::string statText(const RenderStats& st, const std::string& key) {
   for (const auto& [k, v] : st.texts)
     if (k == key) return v;
   return "";
+}
+
+// A synthetic sky envmap of kEnvW×kEnvH texels: luminance rising toward the zenith, dark ground
+// below the horizon, optionally a sun (a 2×2-texel block `sunLum` bright, 30° above the horizon).
+constexpr int kEnvW = 64, kEnvH = 33;
+inline std::vector<Color> skyTexels(float sunLum) {
+  std::vector<Color> px(static_cast<size_t>(kEnvW) * kEnvH);
+  for (int y = 0; y < kEnvH; ++y)
+    for (int x = 0; x < kEnvW; ++x) {
+      const float cosTheta = std::cos(kPi * y / (kEnvH - 1));
+      px[static_cast<size_t>(y) * kEnvW + x] =
+          cosTheta > 0.0f ? Color(0.6f, 0.8f, 1.2f) * (0.5f + cosTheta) : Color(0.08f, 0.07f, 0.06f);
+    }
+  if (sunLum > 0.0f)
+    for (int y = 10; y < 12; ++y)
+      for (int x = 20; x < 22; ++x) px[static_cast<size_t>(y) * kEnvW + x] = Color(sunLum);
+  return px;
+}
+inline Emitter skyEmitter(float sunLum) {
+  Emitter e;
+  e.type = EmitterType::Envmap;
+  e.filename = "synthetic-sky";
+  e.envWidth = kEnvW;
+  e.envHeight = kEnvH;
+  e.envPixels = skyTexels(sunLum);
+  return e;
 }
 
 }  // namespace rc::test
