@@ -44,21 +44,30 @@ class Distribution1D {
   // `cdf` has bins + 1 entries and `guide` max(1, bins), laid out as a Distribution1D holds them.
   static size_t sampleTable(const double* cdf, const uint32_t* guide, size_t bins, float u, float* remapped) {
     const double uu = u;
-    // The last cdf entry ≤ uu (upper_bound − 1, or 0 below the first): the guide table narrows the
-    // range to the entries of uu's slice of [0, 1) — whole range where rounding of the slice index
-    // could have missed — and a binary search without data-dependent branches finishes.
-    const size_t slices = std::max<size_t>(1, bins), entries = bins + 1;
-    const size_t k = std::min(slices - 1, static_cast<size_t>((uu > 0.0 ? uu : 0.0) * static_cast<double>(slices)));
-    size_t lo = guide[k], hi = k + 1 < slices ? guide[k + 1] + 1 : entries;  // [lo, hi) holds it
-    if (cdf[lo] > uu) lo = 0;
-    if (hi < entries && cdf[hi] <= uu) hi = entries;
-    const double* base = cdf + lo;
-    for (size_t n = hi - lo; n > 1;) {
-      const size_t half = n / 2;
-      base = base[half] <= uu ? base + half : base;
-      n -= half;
+    size_t i;
+    if (bins <= kSmallBins) {
+      // The last cdf entry ≤ uu among the first `bins` (cdf[0] = 0 ≤ uu): with a non-decreasing cdf
+      // that is the count of entries 1 … bins − 1 at or below uu — a few compares without branches,
+      // for the small tables (a few emitters, a quad's triangles) a guided search would mispredict on.
+      i = 0;
+      for (size_t j = 1; j < bins; ++j) i += cdf[j] <= uu ? 1 : 0;
+    } else {
+      // The last cdf entry ≤ uu (upper_bound − 1, or 0 below the first): the guide table narrows the
+      // range to the entries of uu's slice of [0, 1) — whole range where rounding of the slice index
+      // could have missed — and a binary search without data-dependent branches finishes.
+      const size_t slices = bins, entries = bins + 1;
+      const size_t k = std::min(slices - 1, static_cast<size_t>((uu > 0.0 ? uu : 0.0) * static_cast<double>(slices)));
+      size_t lo = guide[k], hi = k + 1 < slices ? guide[k + 1] + 1 : entries;  // [lo, hi) holds it
+      if (cdf[lo] > uu) lo = 0;
+      if (hi < entries && cdf[hi] <= uu) hi = entries;
+      const double* base = cdf + lo;
+      for (size_t n = hi - lo; n > 1;) {
+        const size_t half = n / 2;
+        base = base[half] <= uu ? base + half : base;
+        n -= half;
+      }
+      i = std::min(static_cast<size_t>(base - cdf), bins - 1);
     }
-    size_t i = std::min(static_cast<size_t>(base - cdf), bins - 1);
     while (i + 1 < bins && cdf[i + 1] - cdf[i] == 0.0) ++i;  // never return an empty bin
     if (remapped) {
       const double p = cdf[i + 1] - cdf[i];
@@ -67,6 +76,8 @@ class Distribution1D {
     }
     return i;
   }
+  // Tables of at most this many bins are searched by counting instead of through the guide.
+  static constexpr size_t kSmallBins = 8;
   // The tables sampleTable reads (cdf: size() + 1 entries, guide: max(1, size())).
   const std::vector<double>& cdf() const { return cdf_; }
   const std::vector<uint32_t>& guide() const { return guide_; }

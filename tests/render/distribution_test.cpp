@@ -50,6 +50,15 @@ TEST(Distribution1D, GuidedSearchIsTheInverseCdf) {
   expectSameBins({1.0});
   expectSameBins({1.0, 2.0, 3.0, 4.0});
   expectSameBins({0.0, 0.0, 5.0, 0.0, 1.0, 0.0, 0.0, 2.0, 0.0});  // empty bins between and at the ends
+  // Tables of up to Distribution1D::kSmallBins bins are searched by counting: both sides of it.
+  static_assert(Distribution1D::kSmallBins == 8, "the small tables below straddle kSmallBins");
+  expectSameBins({0.0, 1.0});
+  expectSameBins({1.0, 0.0});
+  expectSameBins({3.0, 1.0});
+  expectSameBins({0.0, 0.0, 1.0});
+  expectSameBins({1e-7, 1.0, 1e-7});
+  expectSameBins({0.0, 2.0, 0.0, 0.0, 1.0, 0.0, 3.0, 0.0});       // eight: counted
+  expectSameBins({0.0, 2.0, 0.0, 0.0, 1.0, 0.0, 3.0, 0.0, 1.0});  // nine: guided
   std::vector<double> lopsided(1000, 1e-6);  // one bin holds nearly all: many bins share a slice
   lopsided[500] = 1.0;
   expectSameBins(lopsided);
