@@ -85,15 +85,34 @@ inline uint32_t paddedSobolReference(uint32_t index, uint32_t dim, uint32_t pixe
   return owenScramble(raw, dimensionSeed(pixelSeed, dim, 0xA7u));
 }
 
+// The two scramble seeds of a draw: its pair's index shuffle and its own digit scramble.
+inline uint32_t pairSeed(uint32_t pixelSeed, uint32_t pair) { return dimensionSeed(pixelSeed, pair, 0x5u); }
+inline uint32_t drawSeed(uint32_t pixelSeed, uint32_t dim) { return dimensionSeed(pixelSeed, dim, 0xA7u); }
+
 // The same, in the form samples use (a test checks equality): owenScramble = rev∘hash∘rev, and
 // rev(sobolDim0(s)) = s, so most bit reversals cancel; the index arrives reversed (once per
-// sample) and the pair's shuffled index is shared by its two dimensions.
-inline uint32_t shuffledIndex(uint32_t reversedIndex, uint32_t pair, uint32_t pixelSeed) {
-  return reverseBits(lowToHighHash(reversedIndex, dimensionSeed(pixelSeed, pair, 0x5u)));
+// sample), the pair's shuffled index is shared by its two dimensions, and the seeds come from
+// pairSeed / drawSeed (or a pixel's PixelDimensionSeeds, which holds them).
+inline uint32_t shuffledIndex(uint32_t reversedIndex, uint32_t pairSeed) {
+  return reverseBits(lowToHighHash(reversedIndex, pairSeed));
 }
-inline uint32_t paddedSobolShuffled(uint32_t shuffled, uint32_t dim, uint32_t pixelSeed) {
+inline uint32_t paddedSobolShuffled(uint32_t shuffled, uint32_t dim, uint32_t drawSeed) {
   const uint32_t reversedRaw = (dim & 1u) ? sobolDim1Reversed(shuffled) : shuffled;
-  return reverseBits(lowToHighHash(reversedRaw, dimensionSeed(pixelSeed, dim, 0xA7u)));
+  return reverseBits(lowToHighHash(reversedRaw, drawSeed));
 }
+
+// The seeds of the first kSeededDims dimensions of one pixel's sequence: the same for all of the
+// pixel's samples, so a pixel hashes them once and its samples read them instead of hashing two
+// seeds per draw.
+inline constexpr uint32_t kSeededDims = 24;
+struct PixelDimensionSeeds {
+  uint32_t pixelSeed = 0;
+  uint32_t pair[kSeededDims / 2];
+  uint32_t dim[kSeededDims];
+  explicit PixelDimensionSeeds(uint32_t seed = 0) : pixelSeed(seed) {
+    for (uint32_t p = 0; p < kSeededDims / 2; ++p) pair[p] = pairSeed(seed, p);
+    for (uint32_t d = 0; d < kSeededDims; ++d) dim[d] = drawSeed(seed, d);
+  }
+};
 
 }  // namespace rc::ld

@@ -21,6 +21,7 @@ class Rng {
   // seeding draws below are PCG's whatever the Rng was used for before).
   void seedWith(uint64_t seed, uint64_t stream) {
     ldSeed_ = ldIndex_ = ldReversedIndex_ = ldDim_ = ldDims_ = 0;
+    ldSeeds_ = nullptr;
     ldShuffledValid_ = false;
     state_ = 0u;
     inc_ = (stream << 1u) | 1u;
@@ -38,10 +39,18 @@ class Rng {
     ldDim_ = firstDim;
     ldDims_ = dims;
     ldShuffledValid_ = false;
+    ldSeeds_ = nullptr;
+  }
+  // The same prefix (dimensions [0, kPixelLowDiscrepancyDims) of sample `index`) with the seeds
+  // read from the pixel's table, which must outlive this Rng's low-discrepancy draws.
+  void useLowDiscrepancy(const ld::PixelDimensionSeeds& seeds, uint32_t index) {
+    useLowDiscrepancy(seeds.pixelSeed, index, kPixelLowDiscrepancyDims);
+    ldSeeds_ = &seeds;
   }
   // Dimensions a pixel sample takes from its low-discrepancy sequence: the camera, then for the
   // first few vertices a light sample and a BSDF sample; deeper vertices gain little from it.
   static constexpr uint32_t kPixelLowDiscrepancyDims = 24;
+  static_assert(kPixelLowDiscrepancyDims <= ld::kSeededDims, "a pixel's table holds the seeds of its prefix");
   // Where the low-discrepancy prefix stands (dim == dims: used up or never set), so that a later
   // stage of the same sample can continue it with useLowDiscrepancy(seed, index, dims, dim).
   uint32_t lowDiscrepancySeed() const { return ldSeed_; }
@@ -52,9 +61,11 @@ class Rng {
   uint32_t nextUint() {
     if (ldDim_ < ldDims_) {
       // Both dimensions of a pair use the same shuffled index: computed at the pair's first.
-      if (!(ldDim_ & 1u) || !ldShuffledValid_) ldShuffled_ = ld::shuffledIndex(ldReversedIndex_, ldDim_ >> 1, ldSeed_);
-      ldShuffledValid_ = !(ldDim_ & 1u);
-      return ld::paddedSobolShuffled(ldShuffled_, ldDim_++, ldSeed_);
+      const uint32_t dim = ldDim_++;
+      if (!(dim & 1u) || !ldShuffledValid_)
+        ldShuffled_ = ld::shuffledIndex(ldReversedIndex_, ldSeeds_ ? ldSeeds_->pair[dim >> 1] : ld::pairSeed(ldSeed_, dim >> 1));
+      ldShuffledValid_ = !(dim & 1u);
+      return ld::paddedSobolShuffled(ldShuffled_, dim, ldSeeds_ ? ldSeeds_->dim[dim] : ld::drawSeed(ldSeed_, dim));
     }
     const uint64_t old = state_;
     state_ = old * 6364136223846793005ULL + inc_;
@@ -82,6 +93,7 @@ class Rng {
   uint32_t ldReversedIndex_ = 0;
   uint32_t ldShuffled_ = 0;       // shuffled index of the current pair
   bool ldShuffledValid_ = false;  // ldShuffled_ belongs to ldDim_'s pair (set at its even dim)
+  const ld::PixelDimensionSeeds* ldSeeds_ = nullptr;  // the pixel's hashed seeds, or none: hash per draw
 };
 
 // Mixes several integers into one well-distributed 64-bit value (for per-pixel streams).

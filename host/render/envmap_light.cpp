@@ -43,21 +43,19 @@ EnvmapLight::EnvmapLight(int width, int height, const std::vector<Color>& pixels
   for (int j = 0; j < bands; ++j) {
     // Mean sinθ over the band: ∫ sinθ dθ / Δθ.
     const double meanSin = (std::cos(j * dTheta) - std::cos((j + 1) * dTheta)) / dTheta;
-    std::vector<double> row(W);
     for (int i = 0; i < W; ++i) {
       const int i1 = (i + 1) % W;
       // ∫ of a bilinear function over its cell = the mean of its four corners.
       const double lum = 0.25 * (std::max(0.0f, luminance(texel(i, j))) + std::max(0.0f, luminance(texel(i1, j))) +
                                  std::max(0.0f, luminance(texel(i, j + 1))) + std::max(0.0f, luminance(texel(i1, j + 1))));
-      row[i] = lum * meanSin;
-      cellWeights[static_cast<size_t>(j) * W + i] = row[i];
-      rowWeights[j] += row[i];
+      const double weight = lum * meanSin;
+      cellWeights[static_cast<size_t>(j) * W + i] = weight;
+      rowWeights[j] += weight;
     }
     total += rowWeights[j];
     solid += W * meanSin;
-    columns_.emplace_back(row);
   }
-  rows_ = Distribution1D(rowWeights);
+  cells_ = PiecewiseConstant2D(cellWeights, bands, W);
   cellPdfUv_.assign(cellWeights.size(), 0.0);
   if (total > 0.0)
     for (size_t k = 0; k < cellWeights.size(); ++k) cellPdfUv_[k] = cellWeights[k] / total * W * bands;
@@ -108,12 +106,11 @@ EnvmapLight::Lookup EnvmapLight::lookup(const Vec3& dirWorld) const {
 }
 
 EnvmapLight::Sample EnvmapLight::sample(Vec2 u) const {
-  float vy, ux;
-  const size_t j = rows_.sample(u.y, &vy);
-  const size_t i = columns_[j].sample(u.x, &ux);
-  float uu = (static_cast<float>(i) + ux + 0.5f) / width_;
+  const PiecewiseConstant2D::Cell c = cells_.sample(u.x, u.y);
+  const size_t i = c.column, j = c.row;
+  float uu = (static_cast<float>(i) + c.remappedX + 0.5f) / width_;
   if (uu >= 1.0f) uu -= 1.0f;
-  const float vv = (static_cast<float>(j) + vy) / (height_ - 1);
+  const float vv = (static_cast<float>(j) + c.remappedY) / (height_ - 1);
   // Radiance and density at the sampled (u, v) and cell directly, as Mitsuba's envmap does: no
   // round trip through the direction's atan2/acos (which agrees up to float rounding).
   float sinTheta;

@@ -56,9 +56,8 @@ class EnvmapLight {
   int width_ = 0, height_ = 0;  // after padding
   std::vector<Color> texels_;    // scaled radiance, row-major, top row first
   Mat3 toWorld_{1.0f}, toLocal_{1.0f};
-  Distribution1D rows_;                 // marginal over the H − 1 bands between texel rows
-  std::vector<Distribution1D> columns_;  // conditional over the W cells of each band
-  std::vector<double> cellPdfUv_;       // density in (u, v) ∈ [0,1]² per cell
+  PiecewiseConstant2D cells_;  // the W × (H − 1) cells between texel centres: bands, then cells within one
+  std::vector<double> cellPdfUv_;  // density in (u, v) ∈ [0,1]² per cell
   double meanLuminance_ = 0.0;
 
   Color texel(int x, int y) const { return texels_[static_cast<size_t>(y) * width_ + x]; }

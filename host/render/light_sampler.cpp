@@ -199,16 +199,22 @@ bool LightSampler::hasEnvironment() const { return !impl_->infinite.empty(); }
 
 namespace {
 
-// Area light at point q with normal n, sampled with solid-angle density pdfSolidNoSel at p (emitter
-// selection pSel not included): the light sample, empty when it carries nothing.
-std::optional<LightSample> areaSample(const Vec3& p, const Vec3& q, const Vec3& n, float pdfSolidNoSel, float pSel,
-                                      const Color& radiance) {
+// The segment from a shading point to a light point and its length (computed once per sample:
+// the density and the light sample both need it).
+struct ToLight {
+  Vec3 v;
+  float dist2, dist;
+  ToLight(const Vec3& p, const Vec3& q) : v(q - p), dist2(glm::dot(v, v)), dist(std::sqrt(dist2)) {}
+};
+
+// Area light at point q with normal n, seen along `to`, sampled with solid-angle density
+// pdfSolidNoSel (emitter selection pSel not included): the light sample, empty when it carries nothing.
+inline std::optional<LightSample> areaSample(const Vec3& q, const Vec3& n, const ToLight& to, float pdfSolidNoSel,
+                                             float pSel, const Color& radiance) {
   LightSample ls;
-  const Vec3 toLight = q - p;
-  const float dist2 = glm::dot(toLight, toLight);
-  if (!(dist2 > 0.0f)) return std::nullopt;
-  const float dist = std::sqrt(dist2);
-  ls.wi = toLight / dist;
+  if (!(to.dist2 > 0.0f)) return std::nullopt;
+  const float dist = to.dist;
+  ls.wi = to.v / dist;
   ls.dist = dist;
   if (!(glm::dot(n, -ls.wi) > 0.0f)) return std::nullopt;  // emits toward +n only
   ls.pdf = pdfSolidNoSel * pSel;
@@ -229,10 +235,9 @@ std::optional<LightSample> sampleMesh(const Mesh& mesh, const Entry& e, const Ve
   const float b0 = 1.0f - su, b1 = u.y * su;
   const Vec3 q = b0 * mesh.positions[tri.x] + b1 * mesh.positions[tri.y] + (1.0f - b0 - b1) * mesh.positions[tri.z];
   const Vec3 n = e.normals[t];
-  const Vec3 toLight = q - p;
-  const float dist2 = glm::dot(toLight, toLight);
-  const float cosL = std::fabs(glm::dot(n, toLight)) / std::sqrt(dist2);
-  return areaSample(p, q, n, static_cast<float>(dist2 / (e.area * cosL)), pSel, radiance);
+  const ToLight to(p, q);
+  const float cosL = std::fabs(glm::dot(n, to.v)) / to.dist;
+  return areaSample(q, n, to, static_cast<float>(to.dist2 / (e.area * cosL)), pSel, radiance);
 }
 
 // A sphere emitter: uniform in the cone of directions that see it from outside, uniform on its
@@ -256,15 +261,14 @@ std::optional<LightSample> sampleSphere(const Sphere& s, const Vec3& p, Vec2 u, 
     const Vec3 q = p + ds * w;
     Vec3 n = glm::normalize(q - s.center);
     if (s.flipNormals) n = -n;
-    return areaSample(p, q, n, 1.0f / (2.0f * kPi * oneMinusCosMax), pSel, radiance);
+    return areaSample(q, n, ToLight(p, q), 1.0f / (2.0f * kPi * oneMinusCosMax), pSel, radiance);
   }
   const Vec3 dirOut = uniformSphere(u);
   const Vec3 q = s.center + s.radius * dirOut;
   const Vec3 n = s.flipNormals ? -dirOut : dirOut;
-  const Vec3 toLight = q - p;
-  const float dist2 = glm::dot(toLight, toLight);
-  const float cosL = std::fabs(glm::dot(n, toLight)) / std::sqrt(dist2);
-  return areaSample(p, q, n, dist2 / (4.0f * kPi * r2 * cosL), pSel, radiance);
+  const ToLight to(p, q);
+  const float cosL = std::fabs(glm::dot(n, to.v)) / to.dist;
+  return areaSample(q, n, to, to.dist2 / (4.0f * kPi * r2 * cosL), pSel, radiance);
 }
 
 std::optional<LightSample> samplePoint(const Emitter& em, const Vec3& p, float pSel) {

@@ -87,17 +87,26 @@ int chunkEnd(const std::vector<SampleRange>& ranges, size_t row, int px, int x1,
 // Fills the RNG streams and film positions of pixels [x0, x1) of row `py` in place (the arrays
 // hold at least their samples): a sample's Rng and input are written once, where they stay.
 // Streams are keyed by the sensor pixel and jittered on the sensor, then moved into the crop
-// window: exact, so the camera, which moves it back, sees the bits a full render sees.
+// window: exact, so the camera, which moves it back, sees the bits a full render sees. With the
+// low-discrepancy sampler each pixel's dimension seeds go to `dimensionSeeds` (one per pixel of the
+// chunk), which the chunk's Rngs read until the next chunk refills it.
 void fillChunk(const Film& film, const RenderLoopSettings& settings, const std::vector<SampleRange>& ranges,
-               size_t row, int py, int x0, int x1, std::vector<Rng>& rngs, std::vector<SampleInput>& inputs) {
+               size_t row, int py, int x0, int x1, std::vector<Rng>& rngs, std::vector<SampleInput>& inputs,
+               std::vector<ld::PixelDimensionSeeds>& dimensionSeeds) {
   const Vec2 cropOrigin(static_cast<float>(film.cropX()), static_cast<float>(film.cropY()));
+  if (settings.lowDiscrepancy && dimensionSeeds.size() < static_cast<size_t>(x1 - x0)) dimensionSeeds.resize(x1 - x0);
   size_t k = 0;
   for (int x = x0; x < x1; ++x) {
     const int sx = film.cropX() + x, sy = film.cropY() + py;
     const PixelRngSeed pixelSeed = pixelRngSeed(settings.seed, film.sensorWidth(), sx, sy, settings.lowDiscrepancy);
+    const ld::PixelDimensionSeeds* seeds = nullptr;
+    if (settings.lowDiscrepancy && ranges[row + x].end > ranges[row + x].first) {
+      dimensionSeeds[x - x0] = ld::PixelDimensionSeeds(pixelSeed.lowDiscrepancySeed);
+      seeds = &dimensionSeeds[x - x0];
+    }
     const Vec2 onSensorPixel(static_cast<float>(sx), static_cast<float>(sy));
     for (int s = ranges[row + x].first; s < ranges[row + x].end; ++s, ++k) {
-      seedPixelRng(rngs[k], pixelSeed, s);
+      seedPixelRng(rngs[k], pixelSeed, s, seeds);
       SampleInput& in = inputs[k];
       in.px = x;
       in.py = py;
@@ -140,6 +149,7 @@ RenderLoopResult sampleLoop(const RenderContext& ctx, Film& film, const RenderLo
     const bool batch = static_cast<bool>(settings.cameraRay);
     const std::vector<SampleRange>& ranges = adaptive.ranges();
     std::vector<Rng> rngs;
+    std::vector<ld::PixelDimensionSeeds> dimensionSeeds;  // read by rngs' low-discrepancy draws
     std::vector<SampleInput> inputs;
     std::vector<Ray> rays;
     std::vector<Hit> hits;
@@ -155,7 +165,7 @@ RenderLoopResult sampleLoop(const RenderContext& ctx, Film& film, const RenderLo
         px = chunkEnd(ranges, row, px, tile.x1(), n);
         if (n == 0) continue;
         if (rngs.size() < n) rngs.resize(n), inputs.resize(n);
-        fillChunk(film, settings, ranges, row, py, chunkBegin, px, rngs, inputs);
+        fillChunk(film, settings, ranges, row, py, chunkBegin, px, rngs, inputs, dimensionSeeds);
         if (batch) traceCameraRays(ctx, settings, inputs.data(), n, rays, hits);
         radiance.resize(n);
         shadeRow(inputs.data(), rngs.data(), n, radiance.data(), tile);

@@ -72,10 +72,15 @@ inline PixelRngSeed pixelRngSeed(uint64_t seed, int width, int px, int py, bool 
   return p;
 }
 // Sets `rng` (in place: no temporary to copy) to the stream of sample `sampleIndex` of the pixel.
-inline void seedPixelRng(Rng& rng, const PixelRngSeed& p, int sampleIndex) {
+// `dimensionSeeds` (optional): the pixel's ld::PixelDimensionSeeds(p.lowDiscrepancySeed), kept
+// alive while the Rng draws its prefix, so that its draws read their seeds instead of hashing them.
+inline void seedPixelRng(Rng& rng, const PixelRngSeed& p, int sampleIndex,
+                         const ld::PixelDimensionSeeds* dimensionSeeds = nullptr) {
   // Everything hashed into the state: PCG streams that differ only in the increment are correlated.
   rng.seedWith(hashMix(p.seed, p.pixel, static_cast<uint64_t>(sampleIndex)), p.pixel);
-  if (p.lowDiscrepancy) rng.useLowDiscrepancy(p.lowDiscrepancySeed, static_cast<uint32_t>(sampleIndex), Rng::kPixelLowDiscrepancyDims);
+  if (!p.lowDiscrepancy) return;
+  if (dimensionSeeds) rng.useLowDiscrepancy(*dimensionSeeds, static_cast<uint32_t>(sampleIndex));
+  else rng.useLowDiscrepancy(p.lowDiscrepancySeed, static_cast<uint32_t>(sampleIndex), Rng::kPixelLowDiscrepancyDims);
 }
 
 // The RNG of sample `sampleIndex` of pixel (px, py) of an image `width` wide; with lowDiscrepancy

@@ -40,6 +40,36 @@ TEST(LowDiscrepancy, RngPrefixEqualsTheDefinition) {
     }
 }
 
+// A pixel's hashed seed table gives the same prefix as the seed hashed per draw, whatever mix of
+// next2D (which skips to a pair's start) and single draws a sample makes, and the same PCG after.
+TEST(LowDiscrepancy, PixelSeedTableGivesTheSameDraws) {
+  for (uint32_t seed : {0u, 1u, 0xDEADBEEFu}) {
+    const ld::PixelDimensionSeeds table(seed);
+    for (uint32_t index = 0; index < 300; index += 7) {
+      Rng hashed(3, 4), seeded(3, 4);
+      hashed.useLowDiscrepancy(seed, index, Rng::kPixelLowDiscrepancyDims);
+      seeded.useLowDiscrepancy(table, index);
+      EXPECT_EQ(seeded.lowDiscrepancySeed(), seed);
+      for (int k = 0; k < 16; ++k) {
+        if (k % 3 == 1) {
+          const Vec2 a = hashed.next2D(), b = seeded.next2D();
+          ASSERT_EQ(a.x, b.x);
+          ASSERT_EQ(a.y, b.y);
+        } else {
+          ASSERT_EQ(hashed.nextUint(), seeded.nextUint()) << "seed " << seed << " index " << index << " draw " << k;
+        }
+      }
+      EXPECT_EQ(hashed.lowDiscrepancyDim(), seeded.lowDiscrepancyDim());
+    }
+    // Dimension by dimension against the definition.
+    Rng rng(1, 2);
+    rng.useLowDiscrepancy(table, 5);
+    for (uint32_t d = 0; d < Rng::kPixelLowDiscrepancyDims; ++d) EXPECT_EQ(rng.nextUint(), ld::paddedSobolReference(5, d, seed));
+    Rng plain(1, 2);
+    EXPECT_EQ(rng.nextUint(), plain.nextUint());
+  }
+}
+
 // Every elementary interval of area 2^-m (2^a × 2^(m-a) cells) holds exactly one of the first 2^m
 // points of each pair — for every pixel seed.
 TEST(LowDiscrepancy, EveryPairIsANetForPowersOfTwo) {

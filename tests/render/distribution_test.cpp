@@ -1,5 +1,6 @@
 // Distribution1D's guided search returns the bin of the inverse-CDF definition (upper_bound on the
-// cumulative table) for every u, including u on a bin edge, zero-weight bins and lopsided weights.
+// cumulative table) for every u, including u on a bin edge, zero-weight bins and lopsided weights;
+// PiecewiseConstant2D's flat table returns the cell of a marginal and per-row Distribution1Ds.
 #include "render/distribution.h"
 
 #include <gtest/gtest.h>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "core/error.h"
 #include "core/rng.h"
 
 namespace rc {
@@ -48,6 +50,15 @@ TEST(Distribution1D, GuidedSearchIsTheInverseCdf) {
   expectSameBins({1.0});
   expectSameBins({1.0, 2.0, 3.0, 4.0});
   expectSameBins({0.0, 0.0, 5.0, 0.0, 1.0, 0.0, 0.0, 2.0, 0.0});  // empty bins between and at the ends
+  // Tables of up to Distribution1D::kSmallBins bins are searched by counting: both sides of it.
+  static_assert(Distribution1D::kSmallBins == 8, "the small tables below straddle kSmallBins");
+  expectSameBins({0.0, 1.0});
+  expectSameBins({1.0, 0.0});
+  expectSameBins({3.0, 1.0});
+  expectSameBins({0.0, 0.0, 1.0});
+  expectSameBins({1e-7, 1.0, 1e-7});
+  expectSameBins({0.0, 2.0, 0.0, 0.0, 1.0, 0.0, 3.0, 0.0});       // eight: counted
+  expectSameBins({0.0, 2.0, 0.0, 0.0, 1.0, 0.0, 3.0, 0.0, 1.0});  // nine: guided
   std::vector<double> lopsided(1000, 1e-6);  // one bin holds nearly all: many bins share a slice
   lopsided[500] = 1.0;
   expectSameBins(lopsided);
@@ -63,6 +74,68 @@ TEST(Distribution1D, RemappedIsUniformWithinTheBin) {
   EXPECT_NEAR(r, 0.5f, 1e-6f);
   EXPECT_EQ(d.sample(0.625f, &r), 1u);
   EXPECT_NEAR(r, 0.5f, 1e-6f);
+}
+
+// The definition of the 2-D sample: the row from a Distribution1D of the row sums, the column from
+// a Distribution1D of that row, both with their remapped values.
+void expectSameCells(const std::vector<double>& weights, size_t rows, size_t cols) {
+  const PiecewiseConstant2D flat(weights, rows, cols);
+  EXPECT_EQ(flat.rows(), rows);
+  EXPECT_EQ(flat.cols(), cols);
+  std::vector<double> rowSums(rows, 0.0);
+  std::vector<Distribution1D> perRow;
+  for (size_t j = 0; j < rows; ++j) {
+    const std::vector<double> row(weights.begin() + j * cols, weights.begin() + (j + 1) * cols);
+    for (double w : row) rowSums[j] += w;
+    perRow.emplace_back(row);
+  }
+  const Distribution1D marginal(rowSums);
+  auto check = [&](float ux, float uy) {
+    float rx = -1.0f, ry = -1.0f;
+    const size_t j = marginal.sample(uy, &ry);
+    const size_t i = perRow[j].sample(ux, &rx);
+    const PiecewiseConstant2D::Cell c = flat.sample(ux, uy);
+    ASSERT_EQ(c.row, j) << "u = (" << ux << ", " << uy << ")";
+    ASSERT_EQ(c.column, i) << "u = (" << ux << ", " << uy << ")";
+    ASSERT_EQ(c.remappedX, rx);
+    ASSERT_EQ(c.remappedY, ry);
+  };
+  Rng rng(5);
+  for (int k = 0; k < 20000; ++k) check(rng.nextFloat(), rng.nextFloat());
+  // Every row's column edges, at a u.y inside that row, and the ends of [0, 1).
+  for (size_t j = 0; j < rows; ++j) {
+    const double* cdf = perRow[j].cdf().data();
+    float uy = -1.0f;
+    for (float v = 0.0f; v < 1.0f && uy < 0.0f; v += 1.0f / 4096.0f)
+      if (marginal.sample(v) == j) uy = v;
+    if (uy < 0.0f) continue;  // an empty row: no u.y reaches it
+    for (size_t i = 0; i <= cols; ++i) {
+      const float edge = static_cast<float>(cdf[i]);
+      for (float ux : {std::nextafter(edge, 0.0f), edge, std::nextafter(edge, 1.0f)})
+        if (ux >= 0.0f && ux < 1.0f) check(ux, uy);
+    }
+  }
+  for (float ux : {0.0f, 0.99999994f})
+    for (float uy : {0.0f, 0.99999994f}) check(ux, uy);
+}
+
+TEST(PiecewiseConstant2D, FlatTableGivesTheCellsOfPerRowDistributions) {
+  expectSameCells({1.0, 2.0, 3.0, 4.0, 5.0, 6.0}, 2, 3);
+  expectSameCells({7.0}, 1, 1);
+  expectSameCells({1.0, 0.0, 2.0, 5.0}, 4, 1);  // one column: the column is always 0
+  expectSameCells({0.0, 0.0, 0.0, 0.0}, 2, 2);  // all black: uniform over the cells
+  // A black row between lit ones, empty cells at a row's ends, one bright cell among dim ones.
+  expectSameCells({0.0, 3.0, 0.0, 1.0, /**/ 0.0, 0.0, 0.0, 0.0, /**/ 2.0, 0.0, 0.0, 0.0, /**/ 1e-6, 1e-6, 1.0, 1e-6}, 4, 4);
+  const size_t rows = 31, cols = 64;  // an envmap-like table with a sun: lopsided rows and columns
+  std::vector<double> w(rows * cols);
+  for (size_t k = 0; k < w.size(); ++k) w[k] = double(k * k % 89) * 1e-3;
+  w[7 * cols + 40] = 500.0;
+  expectSameCells(w, rows, cols);
+}
+
+TEST(PiecewiseConstant2D, RejectsWeightsOfTheWrongSize) {
+  EXPECT_THROW(PiecewiseConstant2D({1.0, 2.0, 3.0}, 2, 2), Error);
+  EXPECT_THROW(PiecewiseConstant2D({}, 0, 0), Error);
 }
 
 }  // namespace
