@@ -37,7 +37,9 @@ struct RcacheParams {
   } follow;
   // Lobe split of layered materials (Technique::LobeSplit): Auto lets the cost pilot choose.
   enum class LobeSplitMode { Auto, On, Off } lobeSplit = LobeSplitMode::Auto;
-  bool costPilot = true;
+  // Off by default: its choice follows timings, so the same command could render a different
+  // (equally unbiased) image on another run or machine, and tiles or walk frames could choose apart.
+  bool costPilot = false;
   float costPilotShare = 0.05f;  // the cost pilot's budget, a share of the path-traced render
 };
 

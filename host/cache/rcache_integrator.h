@@ -59,9 +59,10 @@
 //   fallback     true   a pilot decides before the fill whether the cache can pay; if it would
 //                       serve less than fallback_share of the image, the image is path traced
 //   fallback_share 0.25 that threshold (cache/path_fallback.h says why 0.25)
-//   cost_pilot   true   where the share pilot caches, a cost pilot at ~1/64 of the pixels chooses
+//   cost_pilot   false  where the share pilot caches, a cost pilot at ~1/64 of the pixels chooses
 //                       the fastest of path tracer, rcache and rcache + lobe split to the path
-//                       tracer's error at the requested spp (cache/cost_pilot.h)
+//                       tracer's error at the requested spp (cache/cost_pilot.h); off by default:
+//                       a choice from timings is not reproducible run to run
 //   cost_pilot_share 0.05 the cost pilot's budget: a candidate is tried only while the pilot's time
 //                       stays below this share of the path tracer's predicted render
 //   lobe_split   auto   layered materials' base from records, coat sampled (Technique::LobeSplit):

@@ -85,7 +85,7 @@ TEST(CostPilot, RendersWithTheCandidateItChose) {
   const Scene s = skyScene();
   // A budget that lets every candidate be tried (at 4 spp the path-traced render is far shorter
   // than one candidate's pilot).
-  const auto r = test::renderScene(s, test::rcacheSettings(s, {{"cost_pilot_share", "1000"}}), 4, 1);
+  const auto r = test::renderScene(s, test::rcacheSettings(s, {{"cost_pilot", "true"}, {"cost_pilot_share", "1000"}}), 4, 1);
   const std::string choice = test::statText(r.stats, "cost_pilot");
   const std::string candidates = statJson(r.stats, "cost_pilot_candidates");
   std::printf("share pilot: %s\ncost pilot: %s\n%s\n", test::statText(r.stats, "fallback").c_str(), choice.c_str(),
@@ -109,7 +109,7 @@ TEST(CostPilot, RendersWithTheCandidateItChose) {
   // lobe_split=false: no such candidate, no split; cost_pilot=false: no pilot, lobe_split=true
   // keeps the split, auto does not (the default without a measurement).
   const auto off =
-      test::renderScene(s, test::rcacheSettings(s, {{"lobe_split", "false"}, {"cost_pilot_share", "1000"}}), 4, 1);
+      test::renderScene(s, test::rcacheSettings(s, {{"cost_pilot", "true"}, {"lobe_split", "false"}, {"cost_pilot_share", "1000"}}), 4, 1);
   EXPECT_NE(statJson(off.stats, "cost_pilot_candidates").find("\"rcache\""), std::string::npos);
   EXPECT_EQ(statJson(off.stats, "cost_pilot_candidates").find("lobe split"), std::string::npos);
   EXPECT_LE(off.stats.get("lobe_split_fraction", 0.0), 0.0);
@@ -119,10 +119,12 @@ TEST(CostPilot, RendersWithTheCandidateItChose) {
   EXPECT_GT(kept.stats.get("lobe_split_fraction"), 0.1);
   const auto unmeasured = test::renderScene(s, test::rcacheSettings(s, {{"cost_pilot", "false"}}), 4, 1);
   EXPECT_LE(unmeasured.stats.get("lobe_split_fraction", 0.0), 0.0);
+  // By default there is no cost pilot (its choice would follow timings).
+  EXPECT_EQ(test::statText(test::renderScene(s, test::rcacheSettings(s), 4, 1).stats, "cost_pilot"), "");
   // At its default budget the pilot tries no cache for a 4-spp render (each candidate's pilot
   // would cost more than 5 % of it): the candidates are reported as not tried and the share
   // pilot's verdict without the split stands.
-  const auto quick = test::renderScene(s, test::rcacheSettings(s), 4, 1);
+  const auto quick = test::renderScene(s, test::rcacheSettings(s, {{"cost_pilot", "true"}}), 4, 1);
   EXPECT_EQ(test::statText(quick.stats, "cost_pilot").rfind("no candidate", 0), 0u) << test::statText(quick.stats, "cost_pilot");
   EXPECT_NE(statJson(quick.stats, "cost_pilot_candidates").find("\"tried\": false"), std::string::npos);
   EXPECT_EQ(test::statText(quick.stats, "fallback"), test::statText(unmeasured.stats, "fallback"));
