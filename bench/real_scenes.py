@@ -107,7 +107,7 @@ def block_means(img, b):
 def compare(a, b, m, spp, spp_mitsuba):
     mean_ratio = (a.mean(axis=(0, 1)) / np.maximum(m.mean(axis=(0, 1)), 1e-12)).tolist()
     if a.shape[0] < 16 or a.shape[1] < 16:
-        return mean_ratio, None
+        return mean_ratio, None, None
     a16, m16 = block_means(a, 16), block_means(m, 16)
     # Noise of a 16-px block mean: the 16 sub-blocks (4×4 px) of each block give 16·3 estimates of
     # the sub-block variance from the seed difference; a block mean averages 16 sub-blocks.
@@ -119,7 +119,13 @@ def compare(a, b, m, spp, spp_mitsuba):
     z = np.abs(a16 - m16) / np.sqrt(np.maximum(var_blk, 1e-20))[..., None]
     # Blocks that are exactly equal and noiseless (black background) carry no information.
     z[np.abs(a16 - m16) < 1e-7] = 0.0
-    return mean_ratio, float(z.max())
+    # The whole image's mean in units of its noise, per channel (same sub-block estimate): tells a
+    # mean ratio beyond 1 % that is noise (dim or firefly-prone scenes) from a bias.
+    d4c = block_means(a, 4) - block_means(b, 4)
+    n_sub = d4c.shape[0] * d4c.shape[1]
+    var_mean = ((d4c ** 2).mean(axis=(0, 1)) / 2.0) / n_sub * (1.0 + spp / spp_mitsuba)
+    mean_z = (np.abs(a.mean(axis=(0, 1)) - m.mean(axis=(0, 1))) / np.sqrt(np.maximum(var_mean, 1e-30))).tolist()
+    return mean_ratio, float(z.max()), mean_z
 
 
 def main():
@@ -177,7 +183,7 @@ def main():
                 if all(imgs):
                     a, b, m = load_exr(imgs[0]), load_exr(imgs[1]), load_exr(ref)
                     if a.shape == m.shape:
-                        row["mean_ratio"], row["block_z"] = compare(a, b, m, args.spp, args.spp_mitsuba)
+                        row["mean_ratio"], row["block_z"], row["mean_z"] = compare(a, b, m, args.spp, args.spp_mitsuba)
                         row["agree"] = bool(all(abs(r - 1) < 0.01 for r in row["mean_ratio"]) and
                                             (row["block_z"] is None or row["block_z"] < 4))
                     else:

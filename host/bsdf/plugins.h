@@ -35,5 +35,8 @@ std::shared_ptr<Bsdf> createPrincipledBsdf(const Properties& props, const std::v
                                            const BsdfTextures& textures);
 std::shared_ptr<Bsdf> createMaskBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
                                      const BsdfTextures& textures);
+std::shared_ptr<Bsdf> createPolarizedPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
+                                                 const BsdfTextures& textures);
+std::shared_ptr<Bsdf> createPolarizerBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
 
 }  // namespace rc
