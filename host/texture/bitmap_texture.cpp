@@ -31,6 +31,7 @@ class BitmapTexture final : public Texture {
            ty * ((1.0f - tx) * texel(ix, iy + 1) + tx * texel(ix + 1, iy + 1));
   }
   Color mean() const override { return mean_; }
+  std::pair<int, int> resolution() const override { return {w_, h_}; }
 
  private:
   // floor as an index, saturated far outside any image so wrapping stays in integer range.

@@ -20,6 +20,7 @@
 // centres sit at (i + ½)/width.
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/math.h"
@@ -32,6 +33,9 @@ class Texture {
   virtual Color eval(const Vec2& uv) const = 0;
   // Mean over the unit uv square (what a constant stand-in would be, in lenient mode).
   virtual Color mean() const = 0;
+  // Pixels along u and v (Mitsuba's Texture::resolution: 1×1 unless the texture is an image); a
+  // projector's aspect ratio is its texture's.
+  virtual std::pair<int, int> resolution() const { return {1, 1}; }
 };
 
 using TexturePtr = std::shared_ptr<const Texture>;
