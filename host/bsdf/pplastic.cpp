@@ -18,6 +18,7 @@
 // D·G1(wo)/(4 cosθo) with visible normals, else pdf(m)/(4 wi·h), zero where wo·h or wi·h ≤ 0).
 // A texture on ρ or s makes the BSDF vary per point (Bsdf::at); w_s stays that of the means.
 #include "bsdf/bsdf_params.h"
+#include "bsdf/coated_sample.h"
 #include "bsdf/fresnel.h"
 #include "bsdf/microfacet.h"
 #include "bsdf/plugins.h"
@@ -61,19 +62,7 @@ class PolarizedPlasticBsdf final : public Bsdf {
   }
 
   std::optional<BsdfSample> sample(const Vec3& wo, float u1, const Vec2& u2) const override {
-    if (!(wo.z > 0.0f)) return std::nullopt;
-    BsdfSample s;
-    if (u1 < specularSamplingWeight_) {
-      s.wi = reflectAbout(wo, distr_.sample(wo, u2).first);
-      s.lobe = kLobeGlossy;
-    } else {
-      s.wi = squareToCosineHemisphere(u2);
-      s.lobe = kLobeDiffuse;
-    }
-    s.pdf = pdf(wo, s.wi);
-    if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return std::nullopt;
-    s.weight = eval(wo, s.wi) / s.pdf;
-    return s;
+    return wo.z > 0.0f ? sampleCoatOrBase(*this, distr_, wo, u1 < specularSamplingWeight_, u2) : std::nullopt;
   }
 
   uint32_t lobes() const override { return kLobeDiffuse | kLobeGlossy; }
