@@ -7,7 +7,8 @@ else changed; included files are copied the same way) and records
                             (else the first error line: the first unsupported feature, file:line)
   lenient                   rcache --lenient renders it (and how many substitutions it listed)
   mitsuba                   Mitsuba 3 (scalar_rgb) renders it
-and, where both rcache's path tracer and Mitsuba render it, compares them:
+and, where both rcache's path tracer and Mitsuba render it, compares them (rcache with the file's own
+integrator where it takes it, e.g. `direct`, else --integrator path; compare_integrator says which):
   mean_ratio                per-channel mean(rcache) / mean(Mitsuba)
   block_z                   the largest |rcache − Mitsuba| of a 16-px block mean in units of its noise
                             (noise from two rcache seeds, pooled over the block's 4×4-px sub-blocks so
@@ -174,12 +175,20 @@ def main():
                 rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, str(args.spp_mitsuba)], args.timeout * 4)
                 row["mitsuba"] = rc == 0 or first_error(text)
             if row["mitsuba"] is True and row["load_path"] is True:
+                # The file's own integrator where rcache takes it (a `direct` file must be compared as
+                # direct illumination, not as the path tracer --integrator path would make of it),
+                # else the path tracer.
                 imgs = []
+                own = True
                 for seed in (1, 2):
                     img = os.path.join(out, "%s_path_s%d.exr" % (tag, seed))
-                    rc, text = run(base + ["--integrator", "path", "--spp", str(args.spp), "--seed", str(seed), "-o", img],
-                                   args.timeout)
+                    flags = ["--spp", str(args.spp), "--seed", str(seed), "-o", img]
+                    rc, text = run(base + flags, args.timeout) if own else (1, "")
+                    if rc != 0:
+                        own = False
+                        rc, text = run(base + ["--integrator", "path"] + flags, args.timeout)
                     imgs.append(img if rc == 0 else None)
+                row["compare_integrator"] = "file's" if own else "path"
                 if all(imgs):
                     a, b, m = load_exr(imgs[0]), load_exr(imgs[1]), load_exr(ref)
                     if a.shape == m.shape:
