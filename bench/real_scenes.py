@@ -7,7 +7,8 @@ else changed; included files are copied the same way) and records
                             (else the first error line: the first unsupported feature, file:line)
   lenient                   rcache --lenient renders it (and how many substitutions it listed)
   mitsuba                   Mitsuba 3 (scalar_rgb) renders it
-and, where both rcache's path tracer and Mitsuba render it, compares them:
+and, where both rcache's path tracer and Mitsuba render it, compares them (rcache with the file's own
+integrator where it takes it, e.g. `direct`, else --integrator path; compare_integrator says which):
   mean_ratio                per-channel mean(rcache) / mean(Mitsuba)
   block_z                   the largest |rcache − Mitsuba| of a 16-px block mean in units of its noise
                             (noise from two rcache seeds, pooled over the block's 4×4-px sub-blocks so
@@ -107,7 +108,7 @@ def block_means(img, b):
 def compare(a, b, m, spp, spp_mitsuba):
     mean_ratio = (a.mean(axis=(0, 1)) / np.maximum(m.mean(axis=(0, 1)), 1e-12)).tolist()
     if a.shape[0] < 16 or a.shape[1] < 16:
-        return mean_ratio, None
+        return mean_ratio, None, None
     a16, m16 = block_means(a, 16), block_means(m, 16)
     # Noise of a 16-px block mean: the 16 sub-blocks (4×4 px) of each block give 16·3 estimates of
     # the sub-block variance from the seed difference; a block mean averages 16 sub-blocks.
@@ -119,7 +120,13 @@ def compare(a, b, m, spp, spp_mitsuba):
     z = np.abs(a16 - m16) / np.sqrt(np.maximum(var_blk, 1e-20))[..., None]
     # Blocks that are exactly equal and noiseless (black background) carry no information.
     z[np.abs(a16 - m16) < 1e-7] = 0.0
-    return mean_ratio, float(z.max())
+    # The whole image's mean in units of its noise, per channel (same sub-block estimate): tells a
+    # mean ratio beyond 1 % that is noise (dim or firefly-prone scenes) from a bias.
+    d4c = block_means(a, 4) - block_means(b, 4)
+    n_sub = d4c.shape[0] * d4c.shape[1]
+    var_mean = ((d4c ** 2).mean(axis=(0, 1)) / 2.0) / n_sub * (1.0 + spp / spp_mitsuba)
+    mean_z = (np.abs(a.mean(axis=(0, 1)) - m.mean(axis=(0, 1))) / np.sqrt(np.maximum(var_mean, 1e-30))).tolist()
+    return mean_ratio, float(z.max()), mean_z
 
 
 def main():
@@ -168,16 +175,24 @@ def main():
                 rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, str(args.spp_mitsuba)], args.timeout * 4)
                 row["mitsuba"] = rc == 0 or first_error(text)
             if row["mitsuba"] is True and row["load_path"] is True:
+                # The file's own integrator where rcache takes it (a `direct` file must be compared as
+                # direct illumination, not as the path tracer --integrator path would make of it),
+                # else the path tracer.
                 imgs = []
+                own = True
                 for seed in (1, 2):
                     img = os.path.join(out, "%s_path_s%d.exr" % (tag, seed))
-                    rc, text = run(base + ["--integrator", "path", "--spp", str(args.spp), "--seed", str(seed), "-o", img],
-                                   args.timeout)
+                    flags = ["--spp", str(args.spp), "--seed", str(seed), "-o", img]
+                    rc, text = run(base + flags, args.timeout) if own else (1, "")
+                    if rc != 0:
+                        own = False
+                        rc, text = run(base + ["--integrator", "path"] + flags, args.timeout)
                     imgs.append(img if rc == 0 else None)
+                row["compare_integrator"] = "file's" if own else "path"
                 if all(imgs):
                     a, b, m = load_exr(imgs[0]), load_exr(imgs[1]), load_exr(ref)
                     if a.shape == m.shape:
-                        row["mean_ratio"], row["block_z"] = compare(a, b, m, args.spp, args.spp_mitsuba)
+                        row["mean_ratio"], row["block_z"], row["mean_z"] = compare(a, b, m, args.spp, args.spp_mitsuba)
                         row["agree"] = bool(all(abs(r - 1) < 0.01 for r in row["mean_ratio"]) and
                                             (row["block_z"] is None or row["block_z"] < 4))
                     else:

@@ -35,6 +35,8 @@ const FactoryEntry kFactory[] = {
     {"blendbsdf", nullptr, createBlendBsdf, 2, 2, "weight"},
     {"null", createNullBsdf, nullptr, 0, 0, ""},
     {"mask", nullptr, createMaskBsdf, 1, 1, "opacity"},
+    {"pplastic", nullptr, createPolarizedPlasticBsdf, 0, 0, "diffuse_reflectance:rgb specular_reflectance:rgb"},
+    {"polarizer", createPolarizerBsdf, nullptr, 0, 0, ""},
     {"principled", nullptr, createPrincipledBsdf, 0, 0,
      "base_color:rgb roughness anisotropic metallic spec_trans spec_tint sheen sheen_tint flatness clearcoat "
      "clearcoat_gloss"},

@@ -41,5 +41,8 @@ std::shared_ptr<Bsdf> createBumpMapBsdf(const Properties& props, const std::vect
                                         const BsdfTextures& textures);
 std::shared_ptr<Bsdf> createMaskBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
                                      const BsdfTextures& textures);
+std::shared_ptr<Bsdf> createPolarizedPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>& nested,
+                                                 const BsdfTextures& textures);
+std::shared_ptr<Bsdf> createPolarizerBsdf(const Properties& props, const std::vector<BsdfPtr>& nested);
 
 }  // namespace rc

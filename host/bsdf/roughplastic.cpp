@@ -31,6 +31,7 @@
 
 #include "bsdf/bsdf_layer.h"
 #include "bsdf/bsdf_params.h"
+#include "bsdf/coated_sample.h"
 #include "bsdf/fresnel.h"
 #include "bsdf/microfacet.h"
 #include "bsdf/plugins.h"
@@ -149,19 +150,7 @@ class RoughPlasticBsdf final : public Bsdf {
   }
 
   std::optional<BsdfSample> sample(const Vec3& wo, float u1, const Vec2& u2) const override {
-    if (!(wo.z > 0.0f)) return std::nullopt;
-    BsdfSample s;
-    if (u1 < probSpecular(wo.z)) {
-      s.wi = sampleCoat(wo, u2);
-      s.lobe = kLobeGlossy;
-    } else {
-      s.wi = squareToCosineHemisphere(u2);
-      s.lobe = kLobeDiffuse;
-    }
-    s.pdf = pdf(wo, s.wi);
-    if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return std::nullopt;
-    s.weight = eval(wo, s.wi) / s.pdf;
-    return s;
+    return wo.z > 0.0f ? sampleCoatOrBase(*this, distr_, wo, u1 < probSpecular(wo.z), u2) : std::nullopt;
   }
 
   uint32_t lobes() const override { return kLobeDiffuse | kLobeGlossy; }

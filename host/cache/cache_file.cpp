@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "bsdf/rough_textures.h"
 #include "brdf/table_cache.h"
 #include "cache/cache_file_validation.h"
 #include "cache/world_frame.h"
@@ -84,6 +85,14 @@ uint64_t cacheSceneHash(const Scene& scene, int maxDepth, bool tlMode) {
     if (e.type == EmitterType::Spot) {
       const float spot[2] = {e.spotCutoffRad, e.spotBeamRad};
       hashFloats(h, spot, 2);
+    }
+    if (e.type == EmitterType::Projector) {
+      const float projector[2] = {e.projectorCot, e.projectorAspect};
+      hashFloats(h, projector, 2);
+    }
+    if (e.projection) {
+      const std::string key = textureFingerprint(*e.projection);
+      h = fnv1a64(key.data(), key.size(), h);
     }
     // The envmap by its pixels, not its path: an edited image must not reuse a stale cache, and
     // the same scene run from another directory must still find its cache.

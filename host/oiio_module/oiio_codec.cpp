@@ -73,8 +73,9 @@ std::string readImage(const std::string& path, rc::ImageChannels& image) {
     return why.empty() ? "read failed" : why;
   }
   const std::string ext = extensionOf(path);
+  // As Mitsuba's Bitmap readers: PNG, JPEG, BMP, TGA and PPM files hold 8-bit sRGB.
   image.eightBitSrgb = spec.get_string_attribute("oiio:ColorSpace") == "sRGB" || ext == ".png" || ext == ".jpg" ||
-                       ext == ".jpeg";
+                       ext == ".jpeg" || ext == ".bmp" || ext == ".tga" || ext == ".ppm";
   in->close();
   return "";
 }

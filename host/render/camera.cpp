@@ -11,20 +11,6 @@ namespace {
 constexpr float kDegToRad = kPi / 180.0f;
 }
 
-float horizontalFovDegrees(float fov, const std::string& axisIn, float aspect) {
-  std::string axis = axisIn;
-  if (axis == "smaller") axis = aspect > 1.0f ? "y" : "x";
-  else if (axis == "larger") axis = aspect > 1.0f ? "x" : "y";
-  if (axis == "x") return fov;
-  if (axis == "y") return 2.0f * std::atan(std::tan(0.5f * fov * kDegToRad) * aspect) / kDegToRad;
-  if (axis == "diagonal") {
-    const float diagonal = 2.0f * std::tan(0.5f * fov * kDegToRad);
-    const float width = diagonal / std::sqrt(1.0f + 1.0f / (aspect * aspect));
-    return 2.0f * std::atan(0.5f * width) / kDegToRad;
-  }
-  throw Error("perspective sensor: unknown fov_axis '" + axisIn + "' (x, y, diagonal, smaller, larger)");
-}
-
 CameraModel::CameraModel(const Camera& camera, int width, int height)
     : toWorld_(camera.toWorld), width_(width), height_(height), nearClip_(camera.nearClip), farClip_(camera.farClip),
       principalPointOffset_(camera.principalPointOffset) {

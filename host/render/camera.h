@@ -2,6 +2,7 @@
 // Pinhole camera with Mitsuba 3 `perspective` conventions: the camera looks down local +z, local +y is
 // up, and image x grows toward local −x (Mitsuba's look_at puts local +x on the image's left), so an
 // image rendered here matches Mitsuba's pixel for pixel, not mirrored.
+#include "scene/field_of_view.h"
 #include "core/math.h"
 #include "geometry/accel.h"
 #include "scene/scene.h"
@@ -41,8 +42,5 @@ class CameraModel {
   float nearClip_, farClip_;
   Vec2 principalPointOffset_;  // Mitsuba's principal_point_offset_x/y, fractions of the film size
 };
-
-// Mitsuba's parse_fov: any fov_axis → horizontal fov in degrees. aspect = width / height.
-float horizontalFovDegrees(float fovDegrees, const std::string& fovAxis, float aspect);
 
 }  // namespace rc

@@ -81,7 +81,7 @@ double sceneRadius(const Scene& scene, const std::vector<Emitter>& emitters) {
     for (const Vec3& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
   for (const Sphere& s : scene.spheres) lo = glm::min(lo, s.center - s.radius), hi = glm::max(hi, s.center + s.radius);
   for (const Emitter& e : emitters)
-    if (e.type == EmitterType::Point || e.type == EmitterType::Spot) lo = glm::min(lo, e.position), hi = glm::max(hi, e.position);
+    if (e.type == EmitterType::Point || e.type == EmitterType::Spot || e.type == EmitterType::Projector) lo = glm::min(lo, e.position), hi = glm::max(hi, e.position);
   return lo.x <= hi.x ? std::max(1e-6, 0.5 * static_cast<double>(glm::length(hi - lo))) : 1.0;
 }
 
@@ -156,7 +156,12 @@ LightSampler::LightSampler(const Scene& scene, const std::vector<Emitter>& emitt
     if (em.type == EmitterType::Point) addEntry(std::move(e), 4.0 * kPiD * luminance(em.intensity));
     // A spot's power: its cone at full intensity (an upper bound is enough for light selection).
     else if (em.type == EmitterType::Spot)
-      addEntry(std::move(e), 2.0 * kPiD * (1.0 - em.spotCosCutoff) * luminance(em.intensity));
+      addEntry(std::move(e), 2.0 * kPiD * (1.0 - em.spotCosCutoff) * luminance(em.intensity) *
+                                 (em.projection ? luminance(em.projection->mean()) : 1.0));
+    // A projector's power: π·scale·(mean image irradiance)·(image area on the z = 1 plane).
+    else if (em.type == EmitterType::Projector)
+      addEntry(std::move(e), kPiD * em.scale * luminance(em.projection ? em.projection->mean() : em.irradiance) * 4.0 /
+                                 (double(em.projectorCot) * em.projectorCot * em.projectorAspect));
     else if (em.type == EmitterType::Directional) addEntry(std::move(e), discArea * luminance(em.irradiance));
     else if (em.type == EmitterType::Constant)
       im.infinite.push_back(addEntry(std::move(e), discArea * kPiD * luminance(em.radiance)));
@@ -280,9 +285,13 @@ std::optional<LightSample> samplePoint(const Emitter& em, const Vec3& p, float p
   ls.wi = toLight / ls.dist;
   ls.delta = true;
   ls.pdf = 0.0f;
-  const float falloff = em.type == EmitterType::Spot ? spotFalloff(em, -ls.wi) : 1.0f;
-  if (!(falloff > 0.0f)) return std::nullopt;
-  ls.radiance = em.intensity * (falloff / (dist2 * pSel));
+  if (em.type == EmitterType::Projector) {
+    ls.radiance = projectorEmission(em, p) / pSel;
+  } else {
+    const Color profile = em.type == EmitterType::Spot ? spotProfile(em, -ls.wi) : Color(1.0f);
+    ls.radiance = em.intensity * profile / (dist2 * pSel);
+  }
+  if (!(ls.radiance.r > 0.0f || ls.radiance.g > 0.0f || ls.radiance.b > 0.0f)) return std::nullopt;
   ls.lightPoint = em.position;
   return ls;
 }
@@ -314,6 +323,7 @@ std::optional<LightSample> LightSampler::sample(const Vec3& p, Vec2 u, float uLi
       return sampleSphere(im.scene.spheres[e.sphere], p, u, pSel, em.radiance);
     case EmitterType::Point:
     case EmitterType::Spot:
+    case EmitterType::Projector:
       return samplePoint(em, p, pSel);
     case EmitterType::Directional: {
       LightSample ls;

@@ -10,6 +10,7 @@
 #include "bsdf/bsdf.h"
 #include "core/math.h"
 #include "core/properties.h"
+#include "texture/texture.h"
 
 namespace rc {
 
@@ -45,18 +46,24 @@ struct Cylinder {
   int bsdf = -1;
 };
 
-enum class EmitterType { Area, Point, Directional, Constant, Envmap, Spot };
+enum class EmitterType { Area, Point, Directional, Constant, Envmap, Spot, Projector };
 
 struct Emitter {
   EmitterType type = EmitterType::Area;
   Color radiance{1.0f};       // area, constant
   Color intensity{1.0f};      // point, spot (W/sr; spot: on its axis)
-  Color irradiance{1.0f};     // directional
-  Vec3 position{0.0f};        // point, spot
+  Color irradiance{1.0f};     // directional; projector (constant, on its image plane at z = 1)
+  Vec3 position{0.0f};        // point, spot, projector
   // spot (render/spot_light.h): angles in radians from the local +z, and the inverse of
-  // to_world's linear part that takes world directions into that frame
+  // to_world's linear part that takes world directions into that frame (also the projector's)
   float spotCutoffRad = 0.0f, spotBeamRad = 0.0f, spotCosCutoff = 1.0f, spotCosBeam = 1.0f;
   Mat3 spotWorldToLocal{1.0f};
+  // A projected image: the spot's `texture` (looked up by direction, spanning tan(cutoff) on the
+  // z = 1 plane) or the projector's `irradiance` texture; null: none / the constant `irradiance`.
+  TexturePtr projection;
+  // projector (render/spot_light.h): cot(x_fov / 2) and the image's width / height; its `scale`
+  // is `scale` below
+  float projectorCot = 1.0f, projectorAspect = 1.0f;
   Vec3 direction{0, 0, 1};    // directional: direction light travels (world, unit)
   // envmap: lat-long image, Mitsuba convention (Y up in the emitter's local frame)
   std::string filename;

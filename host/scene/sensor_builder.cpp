@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "scene/field_of_view.h"
 #include "scene/loader.h"
 
 namespace rc {
@@ -146,29 +147,9 @@ void Loader::buildSensor(const std::shared_ptr<XmlFile>& file, const pugi::xml_n
     return;
   }
   Camera& cam = scene_.camera;
-  // Mitsuba's parse_fov: either `fov` along `fov_axis`, or a `focal_length` ("<x>mm", default 50mm)
-  // of a 36×24 mm frame, which fixes the fov on the frame diagonal.
-  if (e.props.has("fov") && e.props.has("focal_length"))
-    e.failParam("focal_length", "give either 'fov' or 'focal_length', not both");
-  if (e.props.has("fov")) {
-    cam.fovDegrees = e.located([&] { return e.props.getFloat("fov", 0.0f); });
-    if (!(cam.fovDegrees > 0.0f && cam.fovDegrees < 180.0f))
-      e.failParam("fov", "'fov' must be in (0, 180) degrees, got " + std::to_string(cam.fovDegrees));
-    cam.fovAxis = e.located([&] { return e.props.getString("fov_axis", "x"); });
-    if (cam.fovAxis != "x" && cam.fovAxis != "y" && cam.fovAxis != "diagonal" && cam.fovAxis != "smaller" &&
-        cam.fovAxis != "larger")
-      e.failParam("fov_axis", "'fov_axis' must be x, y, diagonal, smaller or larger, got '" + cam.fovAxis + "'");
-  } else {
-    std::string focal = e.located([&] { return e.props.getString("focal_length", "50mm"); });
-    if (focal.size() > 2 && focal.compare(focal.size() - 2, 2, "mm") == 0) focal.resize(focal.size() - 2);
-    char* end = nullptr;
-    const double mm = std::strtod(focal.c_str(), &end);
-    if (focal.empty() || *end != '\0' || !(mm > 0.0) || !std::isfinite(mm))
-      e.failParam("focal_length", "'focal_length' must be a positive length like \"50mm\"");
-    cam.fovDegrees = static_cast<float>(2.0 * std::atan(std::sqrt(36.0 * 36.0 + 24.0 * 24.0) / (2.0 * mm)) * 180.0 / kPiD);
-    cam.fovAxis = "diagonal";
-    e.located([&] { return e.props.getString("fov_axis", "x"); });  // Mitsuba does not read it here
-  }
+  const FieldOfView fov = readFieldOfView(e);
+  cam.fovDegrees = fov.degrees;
+  cam.fovAxis = fov.axis;
   // Read and without effect, as in Mitsuba's perspective sensor: a pinhole has no focus, and a
   // static scene does not depend on the shutter interval.
   e.located([&] { return e.props.getFloat("focus_distance", 0.0f); });

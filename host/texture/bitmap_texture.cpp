@@ -49,6 +49,7 @@ class BitmapTexture final : public Texture {
     const Mat3& m = toUv_.m;
     return Vec2((m[0][0] * dx + m[0][1] * dy) * static_cast<float>(w_), (m[1][0] * dx + m[1][1] * dy) * static_cast<float>(h_));
   }
+  std::pair<int, int> resolution() const override { return {w_, h_}; }
 
  private:
   // floor as an index, saturated far outside any image so wrapping stays in integer range.

@@ -20,6 +20,7 @@
 // centres sit at (i + ½)/width.
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/math.h"
@@ -36,6 +37,9 @@ class Texture {
   // the derivative of its bilinear interpolation, zero for nearest filtering); a bumpmap needs it.
   virtual bool hasGradient() const { return false; }
   virtual Vec2 gradient1(const Vec2& /*uv*/) const { return Vec2(0.0f); }
+  // Pixels along u and v (Mitsuba's Texture::resolution: 1×1 unless the texture is an image); a
+  // projector's aspect ratio is its texture's.
+  virtual std::pair<int, int> resolution() const { return {1, 1}; }
 };
 
 using TexturePtr = std::shared_ptr<const Texture>;

@@ -29,7 +29,7 @@ void expectError(const Properties& p, const std::vector<BsdfPtr>& nested, const 
 
 TEST(BsdfFactory, KnownTypes) {
   for (const char* t : {"diffuse", "roughconductor", "conductor", "plastic", "roughplastic", "dielectric", "thindielectric", "twosided",
-                        "blendbsdf", "roughdielectric", "null", "mask", "principled"})
+                        "blendbsdf", "roughdielectric", "null", "mask", "principled", "pplastic", "polarizer"})
     EXPECT_TRUE(isKnownBsdfType(t)) << t;
   EXPECT_FALSE(isKnownBsdfType("principledthin"));
   expectError(props("nosuch"), {}, "unknown BSDF plugin 'nosuch'");

@@ -65,6 +65,20 @@ TEST(Textures, BitmapFilesAreLinearisedUnlessRaw) {
   EXPECT_NEAR(s.bsdfs[1]->tint({0.3f, 0.6f}, {0, 0, 1}).g, srgb, 1e-5f);
 }
 
+// Mitsuba's BMP and TGA readers mark 8-bit files sRGB (Bitmap::read_bmp / read_tga), as PNG and JPEG.
+TEST(Textures, BmpAndTgaFilesAreLinearisedToo) {
+  TempDir dir;
+  const float srgb = 200.0f / 255.0f, linear = std::pow((srgb + 0.055f) / 1.055f, 2.4f);
+  for (const char* name : {"grey.bmp", "grey.tga"}) {
+    writePng(dir.path(name), 200);
+    const Scene s = loadText(dir, sceneXml(std::string("<shape type=\"rectangle\"><bsdf type=\"diffuse\"><texture type=\"bitmap\" "
+                                                       "name=\"reflectance\"><string name=\"filename\" value=\"") +
+                                           name + "\"/></texture></bsdf></shape>"));
+    ASSERT_TRUE(s.bsdfs.at(0)->tinted()) << name;
+    EXPECT_NEAR(s.bsdfs[0]->tint({0.3f, 0.6f}, {0, 0, 1}).g, linear, 1e-5f) << name;
+  }
+}
+
 TEST(Textures, TexturedReflectanceScalesAUnitBsdf) {
   TempDir dir;
   const Scene s = loadText(dir, sceneXml(

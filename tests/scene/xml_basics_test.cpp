@@ -381,7 +381,7 @@ TEST(SceneXml, LenientModeTurnsUnsupportedIntoWarnings) {
       "<bsdf type=\"foo\" id=\"f\"/>\n"
       "<shape type=\"cube\"><ref id=\"f\"/><float name=\"bogus\" value=\"1\"/></shape>\n"
       "<shape type=\"teapot\"/>\n"
-      "<emitter type=\"projector\"/>\n"
+      "<emitter type=\"sunsky\"/>\n"
       "<shapegroup/>");
   expectError([&] { loadText(dir, xml); }, {"unknown plugin 'foo'"});
   LoadOptions o;
@@ -392,7 +392,7 @@ TEST(SceneXml, LenientModeTurnsUnsupportedIntoWarnings) {
   EXPECT_NE(warnings[0].find("scene.xml:3: <bsdf type=\"foo\" id=\"f\">: unknown plugin 'foo'"), std::string::npos);
   EXPECT_NE(warnings[1].find("unsupported parameter 'bogus'"), std::string::npos);
   EXPECT_NE(warnings[2].find("unknown plugin 'teapot'"), std::string::npos);
-  EXPECT_NE(warnings[3].find("unknown plugin 'projector'"), std::string::npos);
+  EXPECT_NE(warnings[3].find("unknown plugin 'sunsky'"), std::string::npos);
   EXPECT_NE(warnings[4].find("unknown element <shapegroup>"), std::string::npos);
   ASSERT_EQ(s.meshes.size(), 1u);  // the teapot is left out, the cube kept with the default material
   EXPECT_EQ(s.bsdfs[s.meshes[0].bsdf]->typeName(), "diffuse");
