@@ -15,8 +15,8 @@ Renderers (each a whole process, same scene file, same -D res, same thread count
   mitsuba      Mitsuba 3 llvm_ad_rgb, the file's own integrator (path), mi.render(scene, spp=N)
   path         rcache --integrator path
   path_ref     (with --rcache-ref) another rcache build's path tracer, e.g. main before this change
-  rcache_final (with --final) rcache --integrator rcache: the final pass's slope (the fill is the
-               same at both sample counts, so it cancels)
+  rcache_final (with --final) rcache --integrator rcache: the final pass's slope (with
+               -D follow_budget=false the fill is the same at both sample counts, so it cancels)
 
 Usage (repository root, after scripts/build.sh):
   /root/.cache/rcache/bench-venv/bin/python bench/per_sample.py --res 256 --threads 2 \
@@ -90,7 +90,9 @@ def main():
         if args.rcache_ref:
             cmds["path_ref"] = rc(args.rcache_ref, "path")
         if args.final:
-            cmds["rcache_final"] = rc(args.rcache, "rcache")
+            # Records at their base settings at both sample counts (follow_budget=false), so the fill
+            # is the same and cancels in the slope.
+            cmds["rcache_final"] = rc(args.rcache, "rcache") + ["-D", "follow_budget=false"]
         return cmds
 
     names = list(commands(args.scenes[0], 1).keys())

@@ -57,6 +57,8 @@ def main():
                 for t in (1, args.threads):
                     s, b = run(args.rcache, path, integrator, t, args.res, args.spp, work)
                     for k in keys:
+                        if k not in s:  # e.g. no fill: the pilot path-traced the scene
+                            continue
                         key = (scene, k, t)
                         best[key] = min(best.get(key, s[k]), s[k])
                     if t == args.threads:
@@ -67,6 +69,9 @@ def main():
     for scene in args.scenes:
         for integrator, keys in PHASES.items():
             for k in keys:
+                if (scene, k, 1) not in best or (scene, k, n) not in best:
+                    print("| %s | %s | — | — | not run (%s) | |" % (scene, k, "the pilot path-traced the scene"))
+                    continue
                 t1, tn = best[(scene, k, 1)], best[(scene, k, n)]
                 print("| %s | %s | %.3f | %.3f | %.2f× | %.2f |" % (scene, k, t1, tn, t1 / tn, busy[(scene, integrator)]))
 

@@ -68,6 +68,7 @@ RcacheParams readRcacheParams(ParamReader& in) {
   p.worldFrame = frame != "record";
   p.autoFrame = frame == "auto";
   p.tlMode = in.choice("mode", "radiance", {"radiance", "tl"}) == "tl";
+  if (!in.flag("follow_budget", true)) p.follow = RcacheParams::FollowBudget{false, false, false, false, false};
   return p;
 }
 

@@ -13,7 +13,9 @@
 // above it (cache/budget_params.h) — rays ×√(spp/16) (at most 8192), a, rmin, rmax
 // ×(spp/16)^(-1/4), spp counted up to 4096 — so the records' noise and interpolation error fall
 // with the spp instead of flooring the error.
-// A given value is used as given at every spp.
+// A given value is used as given at every spp; follow_budget=false keeps all of them at their
+// base values (records independent of the spp: e.g. to time the final pass alone).
+//   follow_budget true  the † values follow the sample budget
 //   a            0.4 †  accuracy of primary-hit caches (Ward's a; Křivánek 2005 uses 0.1–0.5)
 //   rays         512 †  hemisphere rays per record (M×N, N = 4M; the course notes use 500–8000;
 //                       0 = the default, following the budget)

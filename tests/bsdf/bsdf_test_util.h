@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "bsdf/bsdf_factory.h"
 #include "core/rng.h"
 
@@ -215,6 +217,24 @@ inline Chi2Result chi2ForBsdf(const Bsdf& bsdf, const Vec3& wo, uint64_t seed, i
           n * integrateCell(pdf, -1.0 + 2.0 * iz / zBins, -1.0 + 2.0 * (iz + 1) / zBins, 2.0 * kPiD * ip / phiBins,
                             2.0 * kPiD * (ip + 1) / phiBins);
   return chi2Test(observed, expected);
+}
+
+// A pass-through surface (null, mask's transmitted share, polarizer): no density or value for any
+// pair of directions, and every sample goes straight through (wi = −wo) with `weight`, η 1, delta.
+inline void expectPassThrough(const Bsdf& b, Color weight, uint64_t seed, int n) {
+  EXPECT_EQ(b.lobes(), uint32_t(kLobeDelta | kLobeTransmission));
+  Rng rng(seed);
+  for (int k = 0; k < n; ++k) {
+    const Vec3 wo = uniformSphere(rng), wi = uniformSphere(rng);
+    EXPECT_EQ(b.eval(wo, wi), Color(0.0f));
+    EXPECT_EQ(b.pdf(wo, wi), 0.0f);
+    const auto s = b.sample(wo, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
+    ASSERT_TRUE(s);
+    EXPECT_EQ(s->wi, -wo);
+    for (int ch = 0; ch < 3; ++ch) EXPECT_FLOAT_EQ(s->weight[ch], weight[ch]);
+    EXPECT_EQ(s->eta, 1.0f);
+    EXPECT_TRUE(s->lobe & kLobeDelta);
+  }
 }
 
 }  // namespace rc::test

@@ -13,20 +13,7 @@ namespace {
 using namespace rc::test;
 
 TEST(NullBsdf, PassesEveryRayThroughUnchanged) {
-  const BsdfPtr b = make("null");
-  EXPECT_EQ(b->lobes(), uint32_t(kLobeDelta | kLobeTransmission));
-  Rng rng(1);
-  for (int k = 0; k < 100; ++k) {
-    const Vec3 wo = uniformSphere(rng), wi = uniformSphere(rng);
-    EXPECT_EQ(b->eval(wo, wi), Color(0.0f));
-    EXPECT_EQ(b->pdf(wo, wi), 0.0f);
-    const auto s = b->sample(wo, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
-    ASSERT_TRUE(s);
-    EXPECT_EQ(s->wi, -wo);
-    EXPECT_EQ(s->weight, Color(1.0f));
-    EXPECT_EQ(s->eta, 1.0f);
-    EXPECT_TRUE(s->lobe & kLobeDelta);
-  }
+  expectPassThrough(*make("null"), Color(1.0f), 1, 100);
 }
 
 BsdfPtr rough02() { return make("roughconductor", {num("alpha", 0.2)}); }

@@ -86,21 +86,7 @@ TEST(Polarizer, PassesRaysWithHalfTheTransmittance) {
   };
   const Case cases[] = {{{}, Color(0.5f)},
                         {{num("theta", 30.0), rgb("transmittance", 0.8f, 0.5f, 0.2f)}, Color(0.4f, 0.25f, 0.1f)}};
-  for (const Case& c : cases) {
-    const BsdfPtr b = make("polarizer", c.params);
-    EXPECT_EQ(b->lobes(), uint32_t(kLobeDelta | kLobeTransmission));
-    Rng rng(2);
-    for (int k = 0; k < 50; ++k) {
-      const Vec3 wo = uniformSphere(rng), wi = uniformSphere(rng);
-      EXPECT_EQ(b->eval(wo, wi), Color(0.0f));
-      EXPECT_EQ(b->pdf(wo, wi), 0.0f);
-      const auto s = b->sample(wo, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
-      ASSERT_TRUE(s);
-      EXPECT_EQ(s->wi, -wo);
-      for (int ch = 0; ch < 3; ++ch) EXPECT_FLOAT_EQ(s->weight[ch], c.weight[ch]);
-      EXPECT_EQ(s->eta, 1.0f);
-    }
-  }
+  for (const Case& c : cases) expectPassThrough(*make("polarizer", c.params), c.weight, 2, 50);
   EXPECT_THROW(make("polarizer", {str("theta", "north")}), Error);
 }
 

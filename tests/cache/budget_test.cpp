@@ -60,6 +60,16 @@ TEST(BudgetParams, OnlyAutomaticCountsFollowTheBudget) {
   ParamReader inWideMin(&wideMin);
   // The default rmax follows the budget, but not below a given rmin.
   EXPECT_FLOAT_EQ(paramsForBudget(readRcacheParams(inWideMin), 1 << 20).rMaxPx, 5.0f);
+  // follow_budget=false: every value stays at its base, whatever the spp.
+  Properties pinned;
+  pinned.set("follow_budget", textProperty("false"));
+  ParamReader inPinned(&pinned);
+  const RcacheParams p = paramsForBudget(readRcacheParams(inPinned), 1 << 20);
+  EXPECT_EQ(p.rays, RcacheParams().rays);
+  EXPECT_EQ(p.secondaryRays, RcacheParams().secondaryRays);
+  EXPECT_FLOAT_EQ(p.a, RcacheParams().a);
+  EXPECT_FLOAT_EQ(p.rMinPx, RcacheParams().rMinPx);
+  EXPECT_FLOAT_EQ(p.rMaxPx, RcacheParams().rMaxPx);
   Properties bad;
   bad.set("rays", textProperty("5"));
   ParamReader inBad(&bad);

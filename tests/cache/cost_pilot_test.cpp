@@ -64,12 +64,7 @@ Scene skyScene() {
   s.bsdfs.push_back(test::diffuse(0.6f, 0.5f, 0.4f));
   test::addQuad(s, {-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}, 0);
   test::addQuad(s, {-4, 0, -1}, {4, 0, -1}, {4, 4, -1}, {-4, 4, -1}, 1);
-  Sphere a;
-  a.name = "ball";
-  a.center = Vec3(0.0f, 0.5f, 0.0f);
-  a.radius = 0.5f;
-  a.bsdf = 1;
-  s.spheres.push_back(a);
+  test::addSphere(s, "ball", Vec3(0.0f, 0.5f, 0.0f), 0.5f, 1);
   s.emitters.push_back(test::skyEmitter(400.0f));
   test::setTestCamera(s, Vec3(0, 1.6f, 3.2f), Vec3(0, 0.3f, 0), 96, 96);
   return s;

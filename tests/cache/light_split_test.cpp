@@ -80,22 +80,7 @@ Scene skyScene(int res) {
   s.bsdfs.push_back(test::diffuse(0.5f, 0.45f, 0.4f));  // 0 floor
   s.bsdfs.push_back(test::glossy(0.3f));                // 1 glossy sphere
   s.bsdfs.push_back(test::diffuse(0.2f, 0.5f, 0.7f));   // 2 diffuse sphere
-  test::addQuad(s, {-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}, 0);
-  Sphere a;
-  a.name = "glossy";
-  a.center = Vec3(-0.55f, 0.5f, 0.0f);
-  a.radius = 0.5f;
-  a.bsdf = 1;
-  s.spheres.push_back(a);
-  Sphere b = a;
-  b.name = "diffuse";
-  b.center = Vec3(0.6f, 0.4f, 0.3f);
-  b.radius = 0.4f;
-  b.bsdf = 2;
-  s.spheres.push_back(b);
-  s.emitters.push_back(skyEmitter(400.0f));
-  test::setTestCamera(s, Vec3(0, 1.6f, 3.2f), Vec3(0, 0.3f, 0), res, res);
-  return s;
+  return test::twoSpheresUnderSky(s, "glossy", "diffuse", res);
 }
 
 using test::BlockStats;

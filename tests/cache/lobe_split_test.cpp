@@ -103,21 +103,7 @@ TEST(LobeSplit, RoughPlasticUnderSkyAgreesWithPathTracerPerBlock) {
   s.bsdfs.push_back(plastic("roughplastic", 0.1f, Color(0.5f, 0.45f, 0.4f)));  // 0 floor
   s.bsdfs.push_back(plastic("roughplastic", 0.05f, Color(0.2f, 0.5f, 0.7f)));  // 1 sphere
   s.bsdfs.push_back(plastic("plastic", 0.0f, Color(0.6f, 0.6f, 0.6f)));        // 2 sphere (delta coat)
-  test::addQuad(s, {-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}, 0);
-  Sphere a;
-  a.name = "plastic";
-  a.center = Vec3(-0.55f, 0.5f, 0.0f);
-  a.radius = 0.5f;
-  a.bsdf = 1;
-  s.spheres.push_back(a);
-  Sphere b = a;
-  b.name = "smooth plastic";
-  b.center = Vec3(0.6f, 0.4f, 0.3f);
-  b.radius = 0.4f;
-  b.bsdf = 2;
-  s.spheres.push_back(b);
-  s.emitters.push_back(test::skyEmitter(400.0f));
-  test::setTestCamera(s, Vec3(0, 1.6f, 3.2f), Vec3(0, 0.3f, 0), 48, 48);
+  s = test::twoSpheresUnderSky(s, "plastic", "smooth plastic", 48);
   const auto ref = test::renderScene(s, test::pathSettings(s), 512, 11);
   const auto split = test::renderScene(s, test::rcacheSettings(s, {{"lobe_split", "true"}}), 16, 3);
   EXPECT_EQ(test::statText(split.stats, "fallback").rfind("cached", 0), 0u) << test::statText(split.stats, "fallback");

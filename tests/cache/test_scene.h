@@ -195,4 +195,25 @@ inline Emitter skyEmitter(float sunLum) {
   return e;
 }
 
+// A sphere of material `bsdf`.
+inline void addSphere(Scene& s, const std::string& name, Vec3 center, float radius, int bsdf) {
+  Sphere sp;
+  sp.name = name;
+  sp.center = center;
+  sp.radius = radius;
+  sp.bsdf = bsdf;
+  s.spheres.push_back(sp);
+}
+
+// A floor (material 0) and two spheres (materials 1 and 2) under the synthetic sky with a sun, seen
+// from above at res×res; `s` brings the three materials.
+inline Scene twoSpheresUnderSky(Scene s, const std::string& sphere1, const std::string& sphere2, int res) {
+  addQuad(s, {-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}, 0);
+  addSphere(s, sphere1, Vec3(-0.55f, 0.5f, 0.0f), 0.5f, 1);
+  addSphere(s, sphere2, Vec3(0.6f, 0.4f, 0.3f), 0.4f, 2);
+  s.emitters.push_back(skyEmitter(400.0f));
+  setTestCamera(s, Vec3(0, 1.6f, 3.2f), Vec3(0, 0.3f, 0), res, res);
+  return s;
+}
+
 }  // namespace rc::test
