@@ -103,12 +103,8 @@ TEST(LightSplit, CachedEnvironmentAgreesWithPathTracerPerBlock) {
   // than averaged by it (records a few pixels apart on a 48² image). Leaving the cached sky out
   // (≥ 10 % of the sky's power) or counting it twice (records and direct light: measured 8.1× the
   // tolerance) moves the blocks by far more.
-  double worstCached = 0.0, worstSampled = 0.0;
-  for (size_t i = 0; i < r.mean.size(); ++i) {
-    const double tol = 0.04 * r.mean[i] + 0.01;
-    worstCached = std::max(worstCached, std::fabs(a.mean[i] - r.mean[i]) / tol);
-    worstSampled = std::max(worstSampled, std::fabs(b.mean[i] - r.mean[i]) / tol);
-  }
+  const double worstCached = test::worstBlockError(r, a, 0.04, 0.01),
+               worstSampled = test::worstBlockError(r, b, 0.04, 0.01);
   std::printf("worst block error / tolerance: env cached %.3f, env sampled %.3f\n", worstCached, worstSampled);
   EXPECT_LT(worstCached, 1.0);
   EXPECT_LT(worstSampled, 1.0);
@@ -130,9 +126,7 @@ TEST(LightSplit, CachedLargeAreaLightAgreesWithPathTracerPerBlock) {
   EXPECT_EQ(statText(cached.stats, "area_cache"), "area emitters cached");
   EXPECT_EQ(statText(cached.stats, "env_cache"), "off (no environment emitter)");
   const test::BlockStats r = test::blockMeans(ref.image, 16), a = test::blockMeans(cached.image, 16);
-  double worst = 0.0;
-  for (size_t i = 0; i < r.mean.size(); ++i)
-    worst = std::max(worst, std::fabs(a.mean[i] - r.mean[i]) / (0.04 * r.mean[i] + 0.01));
+  const double worst = test::worstBlockError(r, a, 0.04, 0.01);
   std::printf("worst block error / tolerance: area light cached %.3f\n", worst);
   EXPECT_LT(worst, 1.0);
 }

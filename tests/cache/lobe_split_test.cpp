@@ -119,12 +119,8 @@ TEST(LobeSplit, RoughPlasticUnderSkyAgreesWithPathTracerPerBlock) {
                          n = test::blockMeans(sampled.image, 16);
   // Tolerance as in LightSplit.CachedEnvironmentAgreesWithPathTracerPerBlock: 4 % of the block
   // mean + 0.01 per channel (half the 512-spp reference's own noise, half the records').
-  double worst = 0.0, worstSampled = 0.0;
-  for (size_t i = 0; i < r.mean.size(); ++i) {
-    const double tol = 0.04 * r.mean[i] + 0.01;
-    worst = std::max(worst, std::fabs(m.mean[i] - r.mean[i]) / tol);
-    worstSampled = std::max(worstSampled, std::fabs(n.mean[i] - r.mean[i]) / tol);
-  }
+  const double worst = test::worstBlockError(r, m, 0.04, 0.01),
+               worstSampled = test::worstBlockError(r, n, 0.04, 0.01);
   std::printf("worst block error / tolerance: lobe split %.3f, env sampled %.3f\n", worst, worstSampled);
   EXPECT_LT(worst, 1.0);
   EXPECT_LT(worstSampled, 1.0);

@@ -2,6 +2,7 @@
 // Small programmatic scenes and a render helper for the cache tests (no scene files needed, so
 // these tests pin the integrator, not the parser). A Cornell-like box: glossy (or diffuse) floor,
 // coloured diffuse walls, a square area light under the ceiling, camera looking in.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -148,6 +149,15 @@ inline BlockStats blockMeans(const Image& img, int block) {
       for (double v : m) b.mean.push_back(v / (block * block));
     }
   return b;
+}
+
+// The worst block mean's difference from the reference's, over the tolerance rel·mean + abs of that
+// block and channel (< 1: every block agrees).
+inline double worstBlockError(const BlockStats& ref, const BlockStats& img, double rel, double abs) {
+  double worst = 0.0;
+  for (size_t i = 0; i < ref.mean.size(); ++i)
+    worst = std::max(worst, std::fabs(img.mean[i] - ref.mean[i]) / (rel * ref.mean[i] + abs));
+  return worst;
 }
 
 inline IntegratorSettings rcacheSettings(const Scene& s, std::map<std::string, std::string> params = {}) {
