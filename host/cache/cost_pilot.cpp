@@ -46,9 +46,9 @@ Scene pilotScene(const Scene& scene, int width, int height) {
   s.film.width = width;
   s.film.height = height;
   s.film.cropX = s.film.cropY = s.film.cropWidth = s.film.cropHeight = 0;
-  s.sampleCount = scene.sampleCount;
-  s.samplerSeed = scene.samplerSeed;
-  s.samplerType = scene.samplerType;
+  s.sampler.sampleCount = scene.sampler.sampleCount;
+  s.sampler.seed = scene.sampler.seed;
+  s.sampler.type = scene.sampler.type;
   s.integrator = scene.integrator;
   return s;
 }

@@ -111,7 +111,7 @@ class RcachePasses final : public PassRender {
 
 RcachePasses::RcachePasses(const RenderContext& ctx, const IntegratorSettings& settings, const RcacheParams& params,
                            ShBackend* backend, const CacheFiles& files, RenderStats& stats)
-    : ctx_(ctx), settings_(settings), spp_(ctx.options.spp > 0 ? ctx.options.spp : ctx.scene.sampleCount),
+    : ctx_(ctx), settings_(settings), spp_(ctx.options.spp > 0 ? ctx.options.spp : ctx.scene.sampler.sampleCount),
       params_(paramsForBudget(params, spp_)), files_(files), aovs_(parseRcacheAovs(ctx.options.aovs)),
       ownBackend_(backend ? nullptr : makeScalarBackend()), backend_(backend ? *backend : *ownBackend_),
       camera_(ctx.scene.camera, ctx.scene.film) {
@@ -128,7 +128,7 @@ RcachePasses::RcachePasses(const RenderContext& ctx, const IntegratorSettings& s
                                           settings_.rrDepth, lo, hi);
   primaries_ = std::make_unique<PrimaryHits>(ctx, *engine_, camera_, settings_.maxDepth, settings_.hideEmitters);
   run_.reset(new RcacheRun{ctx, backend_, files_, params_, tables_, camera_, *engine_, *primaries_, film.width(),
-                           film.height(), spp_, scene.samplerSeed + ctx.options.seed, usesLowDiscrepancy(ctx)});
+                           film.height(), spp_, scene.sampler.seed + ctx.options.seed, usesLowDiscrepancy(ctx)});
 
   // Phase 0: a pilot decides whether the cache can pay here at all (cache/path_fallback.h).
   chooseTechnique(lo, hi);

@@ -83,9 +83,9 @@ class PathPasses final : public PassRender {
   PathPasses(const RenderContext& ctx, const IntegratorSettings& settings, PathCore core, BatchQuery query)
       : ctx_(ctx), settings_(settings), core_(core), query_(query), rays0_(ctx.accel.raysTraced()),
         camera_(ctx.scene.camera, ctx.scene.film) {
-    loop_.spp = ctx.options.spp > 0 ? ctx.options.spp : ctx.scene.sampleCount;
+    loop_.spp = ctx.options.spp > 0 ? ctx.options.spp : ctx.scene.sampler.sampleCount;
     if (loop_.spp <= 0) throw Error("sampler: sample_count must be positive");
-    loop_.seed = ctx.scene.samplerSeed + ctx.options.seed;
+    loop_.seed = ctx.scene.sampler.seed + ctx.options.seed;
     loop_.lowDiscrepancy = usesLowDiscrepancy(ctx);
     loop_.cameraRay = [this](const Vec2& filmPos) { return camera_.generate(filmPos); };
     loop_.adaptive = ctx.options.adaptive;

@@ -65,7 +65,7 @@ RenderLoopResult renderTiles(const RenderContext& ctx, Film& film, const RenderL
 }  // namespace
 
 bool usesLowDiscrepancy(const RenderContext& ctx) {
-  const std::string& name = ctx.options.sampler.empty() ? ctx.scene.samplerType : ctx.options.sampler;
+  const std::string& name = ctx.options.sampler.empty() ? ctx.scene.sampler.type : ctx.options.sampler;
   return name == "ldsampler";
 }
 

@@ -41,9 +41,7 @@ class Loader {
     Kind kind = Kind::Other;
     BsdfPtr bsdf;
     TexturePtr texture;
-    std::string samplerType;  // Kind::Sampler: the settings a sensor referring to it takes
-    int sampleCount = 0;
-    uint64_t samplerSeed = 0;
+    SamplerSettings sampler;  // Kind::Sampler: the settings a sensor referring to it takes
     std::string where;
   };
   // Registers e's id (an element without one gets a placeholder entry nobody can refer to).

@@ -112,6 +112,15 @@ struct IntegratorSettings {
   std::vector<std::string> wrappers;  // outer integrators holding this one (aov, moment), outermost first
 };
 
+// A sensor's <sampler>: its plugin, sample count and seed (a top-level <sampler id> holds the same).
+struct SamplerSettings {
+  // "independent" (PCG per sample) or "ldsampler" (padded Owen-scrambled Sobol,
+  // core/low_discrepancy.h); Mitsuba's stratified/multijitter/orthogonal load as "ldsampler".
+  std::string type = "independent";
+  int sampleCount = 4;
+  uint64_t seed = 0;
+};
+
 struct Scene {
   std::string sourceFile;
   std::vector<BsdfPtr> bsdfs;
@@ -121,11 +130,7 @@ struct Scene {
   std::vector<Emitter> emitters;
   Camera camera;
   FilmSettings film;
-  int sampleCount = 4;
-  uint64_t samplerSeed = 0;
-  // <sampler type>: "independent" (PCG per sample) or "ldsampler" (padded Owen-scrambled Sobol,
-  // core/low_discrepancy.h); Mitsuba's stratified/multijitter/orthogonal load as "ldsampler".
-  std::string samplerType = "independent";
+  SamplerSettings sampler;
   IntegratorSettings integrator;
   // The names the file (with its includes) declares with <default name="...">: scene parameters
   // ($name) a -D define substitutes, whatever else the name means.

@@ -101,13 +101,13 @@ void buildSampler(Loader& loader, const Element& e, Scene& scene) {
     e.located([&] { return e.props.getBool("jitter", true); });
     if (e.type == "orthogonal") e.located([&] { return e.props.getFloat("strength", 2.0f); });
   }
-  scene.samplerType = e.type == "independent" ? "independent" : "ldsampler";
+  scene.sampler.type = e.type == "independent" ? "independent" : "ldsampler";
   const int count = e.located([&] { return e.props.getInt("sample_count", 4); });
   if (count <= 0) e.failParam("sample_count", "'sample_count' must be positive, got " + std::to_string(count));
   const int seed = e.located([&] { return e.props.getInt("seed", 0); });
   if (seed < 0) e.failParam("seed", "'seed' must be non-negative");
-  scene.sampleCount = count;
-  scene.samplerSeed = static_cast<uint64_t>(seed);
+  scene.sampler.sampleCount = count;
+  scene.sampler.seed = static_cast<uint64_t>(seed);
   loader.checkUnused(e);
 }
 
@@ -117,9 +117,7 @@ void Loader::useSampler(const Named& n, const std::shared_ptr<XmlFile>& file, co
   if (n.kind != Kind::Sampler)
     throw LocatedError(whereOf(*file, ref) + ": id '" + std::string(ref.attribute("id").value()) + "' (defined at " +
                        n.where + ") is not a sampler");
-  scene_.samplerType = n.samplerType;
-  scene_.sampleCount = n.sampleCount;
-  scene_.samplerSeed = n.samplerSeed;
+  scene_.sampler = n.sampler;
 }
 
 void Loader::buildTopLevelSampler(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
@@ -130,9 +128,7 @@ void Loader::buildTopLevelSampler(const std::shared_ptr<XmlFile>& file, const pu
   Scene settings;
   buildSampler(*this, e, settings);
   Named& n = registerId(e, Kind::Sampler);
-  n.samplerType = settings.samplerType;
-  n.sampleCount = settings.sampleCount;
-  n.samplerSeed = settings.samplerSeed;
+  n.sampler = settings.sampler;
 }
 
 void Loader::buildSensor(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {

@@ -109,7 +109,7 @@ TEST(RcacheIntegrator, LastFillPassRefinesOnlySurfaceEdgesAndCoversTheFinalPass)
 // plain one of the same base spp.
 TEST(RcacheIntegrator, AdaptiveSamplingKeepsCacheLoadExactAndRefinesEdges) {
   Scene s = test::boxScene(0.4f, 48, 36);
-  s.samplerType = "ldsampler";
+  s.sampler.type = "ldsampler";
   AdaptiveSettings adaptive;
   adaptive.threshold = 0.05f;
   adaptive.maxSpp = 128;

@@ -75,7 +75,7 @@ inline void setTestCamera(Scene& s, Vec3 eye, Vec3 target, int width, int height
   s.film.width = width;
   s.film.height = height;
   s.film.filter = "box";
-  s.sampleCount = 1;
+  s.sampler.sampleCount = 1;
   s.integrator.maxDepth = 3;
 }
 

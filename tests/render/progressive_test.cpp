@@ -16,7 +16,7 @@ namespace {
 test::World gaussianBox(const std::string& sampler) {
   Scene s = test::cornellLike(16, 16);
   s.film.filter = "gaussian";
-  s.samplerType = sampler;
+  s.sampler.type = sampler;
   return test::World(std::move(s));
 }
 

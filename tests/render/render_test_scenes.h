@@ -124,7 +124,7 @@ inline Scene cornellLike(int width, int height) {
   s.film.width = width;
   s.film.height = height;
   s.film.filter = "box";
-  s.sampleCount = 4;
+  s.sampler.sampleCount = 4;
   return s;
 }
 

@@ -120,12 +120,12 @@ TEST(SceneSensor, PerspectiveFilmSampler) {
   EXPECT_EQ(s.film.height, 200);
   EXPECT_EQ(s.film.filter, "gaussian");
   EXPECT_NEAR(s.film.gaussianStddev, 0.3f, 1e-7f);
-  EXPECT_EQ(s.sampleCount, 64);
-  EXPECT_EQ(s.samplerSeed, 7u);
-  EXPECT_EQ(s.samplerType, "independent");
+  EXPECT_EQ(s.sampler.sampleCount, 64);
+  EXPECT_EQ(s.sampler.seed, 7u);
+  EXPECT_EQ(s.sampler.type, "independent");
   const Scene b = loadText(dir, sceneXml("", "<sensor type=\"perspective\"><film type=\"hdrfilm\"><rfilter type=\"box\"/></film></sensor>"));
   EXPECT_EQ(b.film.filter, "box");
-  EXPECT_EQ(b.samplerType, "independent");  // Mitsuba's default
+  EXPECT_EQ(b.sampler.type, "independent");  // Mitsuba's default
 }
 
 // ldsampler, and Mitsuba's stratified family served by it (their parameters are read, not
@@ -136,11 +136,11 @@ TEST(SceneSensor, LowDiscrepancySamplers) {
     return loadText(dir, sceneXml("", "<sensor type=\"perspective\">" + body + "</sensor>"));
   };
   const Scene ld = sampler("<sampler type=\"ldsampler\"><integer name=\"sample_count\" value=\"32\"/></sampler>");
-  EXPECT_EQ(ld.samplerType, "ldsampler");
-  EXPECT_EQ(ld.sampleCount, 32);
-  EXPECT_EQ(sampler("<sampler type=\"stratified\"><boolean name=\"jitter\" value=\"true\"/></sampler>").samplerType, "ldsampler");
-  EXPECT_EQ(sampler("<sampler type=\"multijitter\"/>").samplerType, "ldsampler");
-  EXPECT_EQ(sampler("<sampler type=\"orthogonal\"><float name=\"strength\" value=\"2\"/></sampler>").samplerType, "ldsampler");
+  EXPECT_EQ(ld.sampler.type, "ldsampler");
+  EXPECT_EQ(ld.sampler.sampleCount, 32);
+  EXPECT_EQ(sampler("<sampler type=\"stratified\"><boolean name=\"jitter\" value=\"true\"/></sampler>").sampler.type, "ldsampler");
+  EXPECT_EQ(sampler("<sampler type=\"multijitter\"/>").sampler.type, "ldsampler");
+  EXPECT_EQ(sampler("<sampler type=\"orthogonal\"><float name=\"strength\" value=\"2\"/></sampler>").sampler.type, "ldsampler");
 }
 
 TEST(SceneSensor, BadValuesAreErrors) {

@@ -340,7 +340,7 @@ void checkMeshData(const MeshData& m, const std::string& what) {
 
 void checkScene(const Scene& s, const std::string& what) {
   ASSERT_TRUE(s.film.width >= 1 && s.film.width <= 16384 && s.film.height >= 1 && s.film.height <= 16384) << what;
-  ASSERT_GE(s.sampleCount, 1) << what;
+  ASSERT_GE(s.sampler.sampleCount, 1) << what;
   ASSERT_TRUE(s.camera.fovDegrees > 0.0f && s.camera.fovDegrees < 180.0f) << what;
   ASSERT_TRUE(std::isfinite(s.camera.nearClip) && std::isfinite(s.camera.farClip)) << what;
   for (int c = 0; c < 4; ++c) ASSERT_TRUE(finite(Vec3(s.camera.toWorld[c]))) << what;
