@@ -69,6 +69,12 @@ uint64_t cacheSceneHash(const Scene& scene, int maxDepth, bool tlMode) {
     const int ids[2] = {c.bsdf, c.flipNormals ? 1 : 0};
     h = fnv1a64(ids, sizeof(ids), h);
   }
+  for (const Curve& c : scene.curves) {
+    hashFloats(h, &c.points[0].x, 4 * c.points.size());
+    h = fnv1a64(c.segments.data(), c.segments.size() * sizeof(c.segments[0]), h);
+    const int ids[2] = {c.bsdf, static_cast<int>(c.basis)};
+    h = fnv1a64(ids, sizeof(ids), h);
+  }
   for (const auto& b : scene.bsdfs) {
     const std::string key = b->parameterKey();
     h = fnv1a64(key.data(), key.size(), h);

@@ -63,7 +63,7 @@ uint32_t sharedRepresentative(const ParallelArray<Primary>& prim, const std::vec
     const uint32_t r = pixelReps[k];
     const ShadePoint& o = prim[r].sp;
     if (repShares[k] < shareGroup && o.hit.bsdf == sp.hit.bsdf && o.hit.mesh == sp.hit.mesh &&
-        o.hit.sphere == sp.hit.sphere && glm::dot(o.frame.n, sp.frame.n) > kSharedLookupMinCos) {
+        o.hit.sphere == sp.hit.sphere && o.hit.curve == sp.hit.curve && glm::dot(o.frame.n, sp.frame.n) > kSharedLookupMinCos) {
       ++repShares[k];
       return r;
     }

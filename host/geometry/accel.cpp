@@ -1,5 +1,6 @@
 // Embree 3 scene: one triangle geometry per mesh, one user geometry holding every analytic sphere,
-// one holding every cylinder (geometry/cylinder_geometry.h).
+// one holding every cylinder (geometry/cylinder_geometry.h), one round-curve geometry per curve
+// shape (geometry/curve_geometry.h).
 #include "geometry/accel.h"
 
 #include <embree3/rtcore.h>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "geometry/curve_geometry.h"
 #include "geometry/cylinder_geometry.h"
 #include "geometry/face_normal.h"
 #include "geometry/ray_counter.h"
@@ -28,6 +30,10 @@ constexpr float kFloatEps = 5.96046448e-8f;  // 2^-24
 // Error bound of a point reconstructed from barycentrics (a handful of roundings) or on a sphere,
 // relative to the magnitude of the coordinates involved, with a generous safety factor.
 constexpr float kPointErrorUlps = 32.0f;
+// Embree's round-curve test refines its hit numerically, to a tolerance relative to the tube's
+// radius rather than to float ulps; this fraction of the radius bounds that error (tests/render
+// curve_test.cpp: rays spawned from curve hits never find the curve again).
+constexpr float kCurveRadiusError = 1e-4f;
 
 inline float maxAbs(const Vec3& p) { return std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}); }
 
@@ -130,6 +136,8 @@ struct Accel::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   std::vector<int> geomToMesh;  // Embree geomID → mesh index, −1 for the sphere geometry
+  std::vector<int> geomToCurve;  // Embree geomID → curve index, −1 for other geometry
+  std::vector<float> curveRadius;  // per curve, its largest radius (curveHit's error bound)
   std::vector<TriangleConstants> meshConstants;  // per mesh (empty for meshes not in the BVH)
   unsigned sphereGeom = RTC_INVALID_GEOMETRY_ID;
   unsigned cylinderGeom = RTC_INVALID_GEOMETRY_ID;
@@ -231,6 +239,15 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
     if (im.geomToMesh.size() <= im.cylinderGeom) im.geomToMesh.resize(im.cylinderGeom + 1, -1);
   }
 
+  for (size_t c = 0; c < scene.curves.size(); ++c) {
+    const unsigned id = attachCurve(im.device, im.scene, scene.curves[c]);
+    im.check(("curve '" + scene.curves[c].name + "'").c_str());
+    if (im.geomToMesh.size() <= id) im.geomToMesh.resize(id + 1, -1);
+    if (im.geomToCurve.size() <= id) im.geomToCurve.resize(id + 1, -1);
+    im.geomToCurve[id] = static_cast<int>(c);
+    im.curveRadius.push_back(curveMaxRadius(scene.curves[c]));
+  }
+
   rtcCommitScene(im.scene);
   im.check("building the scene BVH");
 }
@@ -320,6 +337,25 @@ Hit cylinderHit(const Cylinder& c, const Ray& ray, float t) {
   return h;
 }
 
+// Embree's curve parameter u on segment `prim`; the point is o + t·d (Mitsuba's too), whose error
+// is relative to the ray's coordinates, plus Embree's iterative curve test's, which is relative to
+// the tube's radius.
+Hit curveHit(const Curve& c, int index, float maxRadius, const Ray& ray, unsigned prim, float u, float t) {
+  Hit h;
+  h.t = t;
+  h.curve = index;
+  h.prim = static_cast<int>(prim);
+  h.bsdf = c.bsdf;
+  h.p = ray.o + t * ray.d;
+  h.pError = kPointErrorUlps * kFloatEps * (maxAbs(ray.o) + t * maxAbs(ray.d)) + kCurveRadiusError * maxRadius;
+  const CurveHitGeometry g = curveHitGeometry(c, prim, u, h.p);
+  h.ng = h.ns = g.n;
+  h.dpdu = g.dpdu;
+  h.dpdv = g.dpdv;
+  h.uv = g.uv;
+  return h;
+}
+
 }  // namespace
 
 namespace {
@@ -340,6 +376,10 @@ Hit Accel::hitOf(const Ray& ray, unsigned geomID, unsigned primID, float u, floa
     return sphereHit(scene_.spheres[s], s, ray, tfar, impl_->sphereUv[s] != 0);
   }
   if (geomID == impl_->cylinderGeom) return cylinderHit(scene_.cylinders[primID], ray, tfar);
+  if (geomID < impl_->geomToCurve.size() && impl_->geomToCurve[geomID] >= 0) {
+    const int c = impl_->geomToCurve[geomID];
+    return curveHit(scene_.curves[c], c, impl_->curveRadius[c], ray, primID, u, tfar);
+  }
   const int m = impl_->geomToMesh[geomID];
   return triangleHit(scene_.meshes[m], impl_->meshConstants[m], m, primID, u, v, tfar);
 }

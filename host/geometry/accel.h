@@ -1,5 +1,6 @@
 #pragma once
-// Ray-scene intersection over an Embree 3 BVH (triangle meshes + analytic spheres as user geometry).
+// Ray-scene intersection over an Embree 3 BVH (triangle meshes, analytic spheres and cylinders as
+// user geometry, Embree's round curves).
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -28,6 +29,7 @@ struct Hit {
   int bsdf = -1;
   int emitter = -1;        // area emitter index or -1
   int mesh = -1, sphere = -1, prim = -1;
+  int curve = -1;          // index into Scene::curves (prim: its segment), or -1
   float pError = 0.0f;     // absolute bound on the error of p (from the shape's coordinate magnitudes)
   bool valid() const { return t < std::numeric_limits<float>::infinity(); }
   // Shading frame: built from ns (and dpdu when anisotropic materials need it).

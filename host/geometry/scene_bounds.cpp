@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "geometry/curve_geometry.h"
 #include "geometry/cylinder_geometry.h"
 
 namespace rc {
@@ -33,6 +34,13 @@ void finiteSceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
   for (const Cylinder& c : scene.cylinders) {
     Vec3 a, b;
     cylinderBounds(c, a, b);
+    if (!finite(a) || !finite(b)) continue;
+    add(a);
+    add(b);
+  }
+  for (const Curve& c : scene.curves) {
+    Vec3 a, b;
+    curveBounds(c, a, b);
     if (!finite(a) || !finite(b)) continue;
     add(a);
     add(b);

@@ -20,7 +20,7 @@ constexpr float kDepthJump = 0.1f;
 bool surfacesDiffer(const Hit& a, const Hit& b) {
   if (a.valid() != b.valid()) return true;
   if (!a.valid()) return false;
-  if (a.mesh != b.mesh || a.sphere != b.sphere || a.bsdf != b.bsdf) return true;
+  if (a.mesh != b.mesh || a.sphere != b.sphere || a.curve != b.curve || a.bsdf != b.bsdf) return true;
   if (glm::dot(a.ns, b.ns) < kCreaseCos) return true;
   return std::fabs(a.t - b.t) > kDepthJump * std::min(a.t, b.t);
 }

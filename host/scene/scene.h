@@ -10,6 +10,7 @@
 #include "bsdf/bsdf.h"
 #include "core/math.h"
 #include "core/properties.h"
+#include "scene/curve_loader.h"
 #include "texture/texture.h"
 
 namespace rc {
@@ -43,6 +44,16 @@ struct Cylinder {
   Mat4 toWorld{1.0f};
   Mat4 toObject{1.0f};                 // inverse of toWorld
   bool flipNormals = false;            // normals point toward the axis
+  int bsdf = -1;
+};
+
+// Mitsuba's `linearcurve` / `bsplinecurve`: round tubes along control points with radii
+// (scene/curve_loader.h), intersected by Embree's round curves (geometry/curve_geometry.h).
+struct Curve {
+  std::string name;
+  CurveBasis basis = CurveBasis::Linear;
+  std::vector<Vec4> points;        // world-space position (to_world applied) and radius (never transformed)
+  std::vector<uint32_t> segments;  // each segment's first control point
   int bsdf = -1;
 };
 
@@ -127,6 +138,7 @@ struct Scene {
   std::vector<Mesh> meshes;
   std::vector<Sphere> spheres;
   std::vector<Cylinder> cylinders;
+  std::vector<Curve> curves;
   std::vector<Emitter> emitters;
   Camera camera;
   FilmSettings film;

@@ -1,9 +1,10 @@
-// <shape>: obj, ply, serialized, rectangle, cube, disk as world-space meshes; sphere and cylinder as
-// analytic shapes.
+// <shape>: obj, ply, serialized, rectangle, cube, disk as world-space meshes; sphere, cylinder,
+// linearcurve and bsplinecurve as analytic shapes.
 #include <cmath>
 
 #include "core/frame.h"
 #include "scene/loader.h"
+#include "scene/curve_loader.h"
 #include "scene/mesh_builder.h"
 #include "scene/obj_loader.h"
 #include "scene/ply_loader.h"
@@ -79,6 +80,34 @@ Cylinder makeCylinder(const Element& e, const Mat4& toWorld, const std::string& 
   return c;
 }
 
+// Mitsuba's linearcurve / bsplinecurve. Parameters:
+//   filename   string     the curve file (scene/curve_loader.h)
+//   to_world   transform  applied to the control points' positions; their radii are left as
+//                         written (Mitsuba: "the control points' radii are invariant to this
+//                         transformation")
+// No flip_normals: the normal points away from the curve's axis, and rays from inside miss
+// (Embree culls the inside of round curves, in Mitsuba as here).
+template <class Resolve>
+Curve makeCurve(const Element& e, const Mat4& toWorld, const std::string& name, int material, const Resolve& resolve) {
+  const std::string fn = e.located([&] { return e.props.getString("filename", ""); });
+  if (fn.empty()) e.fail("missing parameter 'filename'");
+  Curve c;
+  c.name = name;
+  c.basis = e.type == "linearcurve" ? CurveBasis::Linear : CurveBasis::BSpline;
+  const std::string path = resolve(fn);
+  CurveData data = e.located([&] { return loadCurves(path, c.basis); });
+  c.points = std::move(data.points);
+  c.segments = std::move(data.segments);
+  for (Vec4& p : c.points) {
+    const Vec4 w = toWorld * Vec4(Vec3(p), 1.0f);
+    if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z))
+      e.failParam("to_world", "a control point of '" + fn + "' is not finite in world space");
+    p = Vec4(Vec3(w), p.w);
+  }
+  c.bsdf = material;
+  return c;
+}
+
 // The object-space triangles of a mesh shape, loaded from its file or generated; sets the
 // policy's face_normals where the type takes it. `resolve` turns the filename into a path.
 template <class Resolve>
@@ -115,7 +144,8 @@ MeshData shapeMeshData(const Element& e, MeshPolicy& policy, const Resolve& reso
 
 void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
   const Element e = parseElement(file, node);
-  static const char* kTypes[] = {"obj", "ply", "serialized", "rectangle", "cube", "disk", "sphere", "cylinder"};
+  static const char* kTypes[] = {"obj", "ply", "serialized", "rectangle", "cube", "disk", "sphere", "cylinder",
+                                "linearcurve", "bsplinecurve"};
   bool known = false;
   for (const char* t : kTypes) known = known || e.type == t;
   if (e.type.empty()) e.fail("missing attribute 'type'");
@@ -163,11 +193,17 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   const Mat4 toWorld = e.transform("to_world");
   int meshIndex = -1, sphereIndex = -1;
 
-  if (e.type == "cylinder") {
-    if (emitterNode) {
-      unsupported(whereOf(*emitterFile, emitterNode) + ": an area emitter on a cylinder is not supported");
-      emitterNode = pugi::xml_node();  // lenient: the cylinder is kept without its emission
-    }
+  const bool curve = e.type == "linearcurve" || e.type == "bsplinecurve";
+  if (emitterNode && (e.type == "cylinder" || curve)) {
+    // Mitsuba 3 cannot sample a position on a curve either (Shape::sample_position is not
+    // implemented for them), so it cannot render one as an area light.
+    unsupported(whereOf(*emitterFile, emitterNode) + ": an area emitter on a " + e.type + " is not supported");
+    emitterNode = pugi::xml_node();  // lenient: the shape is kept without its emission
+  }
+  if (curve) {
+    if (flip) e.failParam("flip_normals", "a curve's normals cannot be flipped (its inside is never hit)");
+    scene_.curves.push_back(makeCurve(e, toWorld, name, material, [&](const std::string& fn) { return resolvePath(e, fn); }));
+  } else if (e.type == "cylinder") {
     scene_.cylinders.push_back(makeCylinder(e, toWorld, name, flip, material));
   } else if (e.type == "sphere") {
     sphereIndex = static_cast<int>(scene_.spheres.size());
