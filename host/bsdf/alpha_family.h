@@ -15,7 +15,7 @@ class AlphaFamily {
   virtual bool variesOnlyInAlpha() const = 0;
   // The smallest and the largest α the texture takes (sampled on a fine uv lattice).
   virtual std::pair<float, float> alphaRange() const = 0;
-  virtual float alphaAt(const Vec2& uv) const = 0;
+  virtual float alphaAt(const TexturePoint& uv) const = 0;
   // The material with a uniform α (what a table at that α describes; without the texture factor).
   virtual BsdfPtr withAlpha(float alpha) const = 0;
 };

@@ -68,7 +68,7 @@ class BlendBsdf final : public Bsdf {
   bool spatiallyVarying() const override {
     return weightTexture_ || a_->spatiallyVarying() || b_->spatiallyVarying();
   }
-  BsdfPtr at(const Vec2& uv) const override {
+  BsdfPtr at(const TexturePoint& uv) const override {
     if (!spatiallyVarying()) return nullptr;
     BsdfPtr a = a_->at(uv), b = b_->at(uv);
     const float w = weightTexture_ ? glm::clamp(textureValue1(*weightTexture_, uv), 0.0f, 1.0f) : w_;

@@ -11,6 +11,7 @@
 
 #include "core/frame.h"
 #include "core/math.h"
+#include "texture/texture.h"
 
 namespace rc {
 
@@ -19,7 +20,7 @@ class Bsdf;
 // What a BSDF that perturbs the shading frame (normalmap, bumpmap) reads of its surface point, in
 // the local coordinates of the unperturbed shading frame (z = the interpolated shading normal).
 struct FramePoint {
-  Vec2 uv{0.0f};
+  TexturePoint uv;
   Vec3 ng{0, 0, 1};              // geometric normal
   Vec3 dpdu{0.0f}, dpdv{0.0f};   // surface partials along u and v (zero where the shape has none)
   Vec3 wo{0, 0, 1};              // toward the viewer
@@ -70,7 +71,7 @@ class Bsdf {
   // scales every value (diffuse `reflectance`, a conductor's `specular_reflectance`). eval, pdf and
   // sample describe the BSDF with that factor 1, so coefficient tables stay per material; callers
   // multiply what leaves the shading point by tint(). `wo` (local) selects the side of a twosided.
-  virtual Color tint(const Vec2& /*uv*/, const Vec3& /*wo*/) const { return Color(1.0f); }
+  virtual Color tint(const TexturePoint& /*uv*/, const Vec3& /*wo*/) const { return Color(1.0f); }
   virtual bool tinted() const { return false; }
 
   // A texture on a parameter that is not a factor on the whole BSDF (a roughness, plastic's
@@ -79,7 +80,7 @@ class Bsdf {
   // then describes the material with each textured parameter at the texture's mean. nullptr (the
   // default) means the BSDF is the same everywhere; use bsdfAt() below.
   virtual bool spatiallyVarying() const { return false; }
-  virtual std::shared_ptr<const Bsdf> at(const Vec2& /*uv*/) const { return nullptr; }
+  virtual std::shared_ptr<const Bsdf> at(const TexturePoint& /*uv*/) const { return nullptr; }
   // Layered BSDFs (a dielectric coat over a diffuse base: plastic, roughplastic) as two BSDFs of
   // their own with eval = base.eval + coat.eval, each with its own pdf and sampling, so that an
   // integrator can estimate the lobes by different techniques (rcache serves the low-frequency
@@ -96,7 +97,7 @@ class Bsdf {
   // is `baseNormal` in the perturbed local coordinates. Callers: geometry/shading_frame.h.
   virtual bool perturbsFrame() const { return false; }
   virtual Frame perturbedFrame(const FramePoint& /*point*/) const { return Frame(); }
-  virtual std::shared_ptr<const Bsdf> atFrame(const Vec2& /*uv*/, const Vec3& /*baseNormal*/) const { return nullptr; }
+  virtual std::shared_ptr<const Bsdf> atFrame(const TexturePoint& /*uv*/, const Vec3& /*baseNormal*/) const { return nullptr; }
   // Seen from behind, the point's frame may be mirrored to the viewer (a twosided material, or one
   // that perturbs the frame of a twosided material).
   virtual bool isTwoSided() const { return false; }
@@ -108,7 +109,7 @@ using BsdfPtr = std::shared_ptr<const Bsdf>;
 
 // The BSDF at a surface point: `bsdf` itself unless it varies over the surface (Bsdf::at); then the
 // point's BSDF, which `holder` keeps alive.
-inline const Bsdf& bsdfAt(const Bsdf& bsdf, const Vec2& uv, BsdfPtr& holder) {
+inline const Bsdf& bsdfAt(const Bsdf& bsdf, const TexturePoint& uv, BsdfPtr& holder) {
   if (!bsdf.spatiallyVarying()) return bsdf;
   holder = bsdf.at(uv);
   return holder ? *holder : bsdf;

@@ -39,7 +39,7 @@ class PerturbedPointBsdf final : public Bsdf {
            (shadowing_ ? ";shadowing" : "") + ";" + nested_->parameterKey() + ")";
   }
   std::string typeName() const override { return type_; }
-  Color tint(const Vec2& uv, const Vec3& wo) const override { return nested_->tint(uv, wo); }
+  Color tint(const TexturePoint& uv, const Vec3& wo) const override { return nested_->tint(uv, wo); }
   bool tinted() const override { return nested_->tinted(); }
   bool isTwoSided() const override { return nested_->isTwoSided(); }
 
@@ -73,7 +73,7 @@ Frame FramePerturbingBsdf::perturbedFrame(const FramePoint& point) const {
   return finiteVec(f.t) && finiteVec(f.b) ? f : Frame();
 }
 
-BsdfPtr FramePerturbingBsdf::atFrame(const Vec2& uv, const Vec3& baseNormal) const {
+BsdfPtr FramePerturbingBsdf::atFrame(const TexturePoint& uv, const Vec3& baseNormal) const {
   BsdfPtr holder = nested_->at(uv);
   return std::make_shared<PerturbedPointBsdf>(holder ? holder : nested_, baseNormal, shadowing_, typeName());
 }

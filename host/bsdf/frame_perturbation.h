@@ -34,15 +34,15 @@ class FramePerturbingBsdf : public Bsdf {
   float glossyAlpha() const override { return nested_->glossyAlpha(); }
   bool isotropic() const override { return nested_->isotropic(); }
   std::string parameterKey() const override { return nested_->parameterKey(); }
-  Color tint(const Vec2& uv, const Vec3& wo) const override { return nested_->tint(uv, wo); }
+  Color tint(const TexturePoint& uv, const Vec3& wo) const override { return nested_->tint(uv, wo); }
   bool tinted() const override { return nested_->tinted(); }
   bool spatiallyVarying() const override { return nested_->spatiallyVarying(); }
-  BsdfPtr at(const Vec2& uv) const override { return nested_->at(uv); }
+  BsdfPtr at(const TexturePoint& uv) const override { return nested_->at(uv); }
   bool isTwoSided() const override { return nested_->isTwoSided(); }
 
   bool perturbsFrame() const override { return true; }
   Frame perturbedFrame(const FramePoint& point) const override;
-  BsdfPtr atFrame(const Vec2& uv, const Vec3& baseNormal) const override;
+  BsdfPtr atFrame(const TexturePoint& uv, const Vec3& baseNormal) const override;
 
  protected:
   // The perturbed normal at the point (unperturbed local coordinates, any length; zero or not

@@ -51,7 +51,7 @@ class MaskBsdf final : public Bsdf {
   bool spatiallyVarying() const override {
     return opacityTexture_ || nested_->spatiallyVarying() || nested_->tinted();
   }
-  BsdfPtr at(const Vec2& uv) const override {
+  BsdfPtr at(const TexturePoint& uv) const override {
     if (!spatiallyVarying()) return nullptr;
     const float opacity = opacityTexture_ ? textureValue1(*opacityTexture_, uv) : opacity_;
     BsdfPtr holder;

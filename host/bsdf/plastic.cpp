@@ -103,7 +103,7 @@ class PlasticBsdf final : public Bsdf {
   }
 
   bool spatiallyVarying() const override { return diffuseTexture_ || specularTexture_; }
-  BsdfPtr at(const Vec2& uv) const override {
+  BsdfPtr at(const TexturePoint& uv) const override {
     if (!spatiallyVarying()) return nullptr;
     auto point = std::make_shared<PlasticBsdf>(*this);
     point->diffuseTexture_ = point->specularTexture_ = nullptr;

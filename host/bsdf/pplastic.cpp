@@ -77,7 +77,7 @@ class PolarizedPlasticBsdf final : public Bsdf {
   std::string typeName() const override { return "pplastic"; }
 
   bool spatiallyVarying() const override { return diffuseTexture_ || specularTexture_; }
-  BsdfPtr at(const Vec2& uv) const override {
+  BsdfPtr at(const TexturePoint& uv) const override {
     if (!spatiallyVarying()) return nullptr;
     auto point = std::make_shared<PolarizedPlasticBsdf>(*this);
     point->diffuseTexture_ = point->specularTexture_ = nullptr;

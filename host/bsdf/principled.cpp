@@ -274,7 +274,7 @@ class PrincipledBsdf final : public Bsdf {
       if (t) return true;
     return false;
   }
-  BsdfPtr at(const Vec2& uv) const override {
+  BsdfPtr at(const TexturePoint& uv) const override {
     if (!spatiallyVarying()) return nullptr;
     PrincipledParams here = p_;
     if (baseTexture_) here.baseColor = baseTexture_->eval(uv);

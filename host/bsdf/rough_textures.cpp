@@ -12,14 +12,14 @@ TexturePtr textureOf(const BsdfTextures& textures, const std::string& name) {
   return it == textures.end() ? nullptr : it->second;
 }
 
-float textureValue1(const Texture& texture, const Vec2& uv) { return luminance(texture.eval(uv)); }
+float textureValue1(const Texture& texture, const TexturePoint& uv) { return luminance(texture.eval(uv)); }
 
 std::string textureFingerprint(const Texture& texture) {
   constexpr int kLattice = 17;
   uint64_t hash = fnv1a64("texture", 7);
   for (int j = 0; j < kLattice; ++j)
     for (int i = 0; i < kLattice; ++i) {
-      const Color c = texture.eval(Vec2((i + 0.5f) / kLattice, (j + 0.5f) / kLattice));
+      const Color c = texture.eval(TexturePoint(Vec2((i + 0.5f) / kLattice, (j + 0.5f) / kLattice)));
       hash = fnv1a64(&c.r, 3 * sizeof(float), hash);
     }
   char buf[32];
@@ -27,7 +27,7 @@ std::string textureFingerprint(const Texture& texture) {
   return "texture(" + hexColor(texture.mean()) + ";" + buf + ")";
 }
 
-Microfacet RoughnessTextures::distributionAt(const Microfacet& base, const Vec2& uv) const {
+Microfacet RoughnessTextures::distributionAt(const Microfacet& base, const TexturePoint& uv) const {
   const float au = u_ ? textureValue1(*u_, uv) : base.alphaU();
   const float av = v_ ? (v_ == u_ ? au : textureValue1(*v_, uv)) : base.alphaV();
   // The Microfacet constructor clamps α to Mitsuba's 1e-4 floor; a texture can reach 0.
@@ -39,7 +39,7 @@ std::pair<float, float> RoughnessTextures::range(const Microfacet& base) const {
   float lo = INFINITY, hi = -INFINITY;
   for (int j = 0; j < kLattice; ++j)
     for (int i = 0; i < kLattice; ++i) {
-      const float a = distributionAt(base, Vec2((i + 0.5f) / kLattice, (j + 0.5f) / kLattice)).alphaU();
+      const float a = distributionAt(base, TexturePoint(Vec2((i + 0.5f) / kLattice, (j + 0.5f) / kLattice))).alphaU();
       lo = std::fmin(lo, a);
       hi = std::fmax(hi, a);
     }

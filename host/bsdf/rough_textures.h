@@ -13,7 +13,7 @@ namespace rc {
 // The texture on `name`, null when the parameter is not textured.
 TexturePtr textureOf(const BsdfTextures& textures, const std::string& name);
 // Mitsuba's Texture::eval_1 in RGB mode: the luminance of the texture's colour.
-float textureValue1(const Texture& texture, const Vec2& uv);
+float textureValue1(const Texture& texture, const TexturePoint& uv);
 // Text that changes whenever the texture's values do (its mean in hex floats and a hash of its values on a
 // fixed 17×17 uv lattice), so keys of different textures differ.
 std::string textureFingerprint(const Texture& texture);
@@ -25,7 +25,7 @@ class RoughnessTextures {
   bool textured() const { return u_ || v_; }
   bool isotropic() const { return u_ == v_; }
   // `base` with α taken from the textures at uv (the untextured one of alpha_u/alpha_v kept).
-  Microfacet distributionAt(const Microfacet& base, const Vec2& uv) const;
+  Microfacet distributionAt(const Microfacet& base, const TexturePoint& uv) const;
   std::string key() const;  // "" when untextured
   // The smallest and largest α_u the textures give `base` over a 257×257 uv lattice (bilinear and
   // nearest bitmaps up to that size and checkerboards reach their extremes on it).

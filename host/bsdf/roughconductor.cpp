@@ -73,7 +73,7 @@ class RoughConductorBsdf final : public Bsdf, public AlphaFamily {
   std::string typeName() const override { return "roughconductor"; }
 
   bool spatiallyVarying() const override { return roughness_.textured(); }
-  BsdfPtr at(const Vec2& uv) const override {
+  BsdfPtr at(const TexturePoint& uv) const override {
     if (!roughness_.textured()) return nullptr;
     auto point = std::make_shared<RoughConductorBsdf>(roughness_.distributionAt(distr_, uv), fresnel_,
                                                       RoughnessTextures());
@@ -83,7 +83,7 @@ class RoughConductorBsdf final : public Bsdf, public AlphaFamily {
 
   bool variesOnlyInAlpha() const override { return roughness_.textured() && roughness_.isotropic() && distr_.isotropic(); }
   std::pair<float, float> alphaRange() const override { return roughness_.range(distr_); }
-  float alphaAt(const Vec2& uv) const override { return roughness_.distributionAt(distr_, uv).alphaU(); }
+  float alphaAt(const TexturePoint& uv) const override { return roughness_.distributionAt(distr_, uv).alphaU(); }
   BsdfPtr withAlpha(float alpha) const override {
     auto node = std::make_shared<RoughConductorBsdf>(Microfacet(distr_.type(), alpha, alpha, distr_.sampleVisible()),
                                                      fresnel_, RoughnessTextures());

@@ -126,7 +126,7 @@ class RoughDielectricBsdf final : public Bsdf {
   std::string typeName() const override { return "roughdielectric"; }
 
   bool spatiallyVarying() const override { return roughness_.textured(); }
-  BsdfPtr at(const Vec2& uv) const override {
+  BsdfPtr at(const TexturePoint& uv) const override {
     if (!roughness_.textured()) return nullptr;
     auto point = std::make_shared<RoughDielectricBsdf>(roughness_.distributionAt(distr_, uv), params_,
                                                        RoughnessTextures());

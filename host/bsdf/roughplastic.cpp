@@ -167,7 +167,7 @@ class RoughPlasticBsdf final : public Bsdf {
   const Bsdf* coatLayer() const override { return layers_.coat.get(); }
 
   bool spatiallyVarying() const override { return diffuseTexture_ || specularTexture_; }
-  BsdfPtr at(const Vec2& uv) const override {
+  BsdfPtr at(const TexturePoint& uv) const override {
     if (!spatiallyVarying()) return nullptr;
     auto point = std::make_shared<RoughPlasticBsdf>(*this);  // shares the interface tables
     point->diffuseTexture_ = point->specularTexture_ = nullptr;

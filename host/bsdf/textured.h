@@ -11,7 +11,7 @@ BsdfPtr makeTexturedBsdf(BsdfPtr unit, TexturePtr factor);
 
 // `tinted` with its factor at uv applied inside eval and sample (tint() then 1): for wrappers whose
 // other parts (a mask's pass-through) the factor must not scale.
-BsdfPtr bakeTint(BsdfPtr tinted, const Vec2& uv);
+BsdfPtr bakeTint(BsdfPtr tinted, const TexturePoint& uv);
 
 // The parameters whose texture is a factor on the whole BSDF of `bsdfType` (empty: none).
 bool isBsdfFactorParameter(const std::string& bsdfType, const std::string& parameter);

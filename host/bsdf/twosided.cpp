@@ -44,12 +44,12 @@ class TwoSidedBsdf final : public Bsdf {
   }
   std::string typeName() const override { return "twosided"; }
   bool isTwoSided() const override { return true; }
-  Color tint(const Vec2& uv, const Vec3& wo) const override {
+  Color tint(const TexturePoint& uv, const Vec3& wo) const override {
     return wo.z < 0.0f ? back_->tint(uv, flipZ(wo)) : front_->tint(uv, wo);
   }
   bool tinted() const override { return front_->tinted() || back_->tinted(); }
   bool spatiallyVarying() const override { return front_->spatiallyVarying() || back_->spatiallyVarying(); }
-  BsdfPtr at(const Vec2& uv) const override {
+  BsdfPtr at(const TexturePoint& uv) const override {
     if (!spatiallyVarying()) return nullptr;
     BsdfPtr front = front_->at(uv), back = back_ == front_ ? front : back_->at(uv);
     auto point = std::make_shared<TwoSidedBsdf>(front ? front : front_, back ? back : back_);

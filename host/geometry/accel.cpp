@@ -292,6 +292,12 @@ Hit triangleHit(const Mesh& mesh, const TriangleConstants& tc, int meshIndex, un
   } else {
     h.uv = Vec2(u, v);
   }
+  if (!mesh.attributes.empty()) {
+    h.uv.attributes = &mesh.attributes;
+    h.uv.vertices = tri;
+    h.uv.face = prim;
+    h.uv.bary = Vec2(u, v);
+  }
   return h;
 }
 

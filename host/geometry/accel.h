@@ -25,7 +25,8 @@ struct Hit {
   Vec3 ns{0, 0, 1};        // interpolated shading normal (unit), same side as ng
   Vec3 dpdu{0.0f};         // mesh tangent from uvs when available, else zero
   Vec3 dpdv{0.0f};         // the partial along v, likewise (a bumpmap's frame reads both)
-  Vec2 uv{0.0f};           // surface coordinates; on a sphere only where its material reads them (textured), else 0
+  TexturePoint uv;         // surface coordinates; on a sphere only where its material reads them (textured), else 0;
+                           // on a mesh with attributes also its triangle and barycentrics (mesh_attribute)
   int bsdf = -1;
   int emitter = -1;        // area emitter index or -1
   int mesh = -1, sphere = -1, prim = -1;

@@ -31,7 +31,7 @@ inline Color spotProfile(const Emitter& em, const Vec3& dirFromLight) {
   const Vec3 local = em.spotWorldToLocal * dirFromLight;
   const float uvFactor = std::tan(em.spotCutoffRad);
   const Vec2 uv(0.5f + 0.5f * local.x / (local.z * uvFactor), 0.5f + 0.5f * local.y / (local.z * uvFactor));
-  return falloff * em.projection->eval(uv);
+  return falloff * em.projection->eval(TexturePoint(uv));  // an image: no surface point
 }
 
 // What a projector delivers at point p (radiance·solid angle, i.e. the light sample's value before
@@ -50,7 +50,7 @@ inline Color projectorEmission(const Emitter& em, const Vec3& p) {
   const Vec3 axis = Vec3(em.toWorld * Vec4(0.0f, 0.0f, 1.0f, 0.0f));
   const float cosTheta = glm::dot(axis, toPoint) / dist;
   if (!(cosTheta > 0.0f)) return Color(0.0f);
-  const Color e = em.projection ? em.projection->eval(uv) : em.irradiance;
+  const Color e = em.projection ? em.projection->eval(TexturePoint(uv)) : em.irradiance;
   return e * (kPi * em.scale / (local.z * local.z * cosTheta));
 }
 

@@ -72,6 +72,13 @@ void Loader::applyBsdfTextures(const std::shared_ptr<XmlFile>& file, Element& e,
     const std::string name = e.type == "bumpmap" ? kBumpMapTextureParameter : child.attribute("name").value();
     if (e.props.has(name) || (factor && isBsdfFactorParameter(e.type, name)))
       throw LocatedError(whereOf(*file, child) + ": parameter '" + name + "' is given more than once");
+    // rcache plans a material from its textures over uv (a roughness' range, a fingerprint); a
+    // mesh attribute has no uv lookup, so it is taken where it only scales the whole BSDF.
+    const bool standIn = texture && !texture->meshAttribute().empty() && !isBsdfFactorParameter(e.type, name);
+    if (standIn)
+      unsupported(whereOf(*file, child) + ": a mesh_attribute texture on parameter '" + name + "' of <bsdf type=\"" +
+                  e.type + "\"> is not supported (only on diffuse 'reflectance' and conductor 'specular_reflectance'); "
+                  "lenient: its stand-in value");
     Property p;
     p.line = file->lineOf(child);
     p.type = Property::Type::Rgb;
@@ -79,9 +86,9 @@ void Loader::applyBsdfTextures(const std::shared_ptr<XmlFile>& file, Element& e,
     if (texture && isBsdfFactorParameter(e.type, name)) {
       factor = texture;  // the BSDF is built with this parameter 1 and scaled per point
     } else {
-      if (texture && isBsdfTextureParameter(e.type, name))
+      if (texture && isBsdfTextureParameter(e.type, name) && !standIn)
         perPoint[name] = texture;  // evaluated per point by the BSDF (Bsdf::at); the mean stands in
-      else if (texture)
+      else if (texture && !standIn)
         unsupported(whereOf(*file, child) + ": a texture on parameter '" + name + "' of <bsdf type=\"" + e.type +
                     "\"> is not supported (textured parameters: diffuse 'reflectance', conductor "
                     "'specular_reflectance', the roughness of rough conductors/dielectrics, plastic "
@@ -134,6 +141,12 @@ BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_
   checkUnused(e);
   if (factor) bsdf = makeTexturedBsdf(bsdf, factor);
   bsdfTreeSizes_[bsdf.get()] = tree;
+  std::vector<std::string> attributes;
+  for (const BsdfPtr& child : nested)
+    if (auto it = meshAttributesRead_.find(child.get()); it != meshAttributesRead_.end())
+      attributes.insert(attributes.end(), it->second.begin(), it->second.end());
+  if (factor && !factor->meshAttribute().empty()) attributes.push_back(factor->meshAttribute());
+  if (!attributes.empty()) meshAttributesRead_[bsdf.get()] = std::move(attributes);
   registerId(e, Kind::Bsdf, bsdf);
   return bsdf;
 }
@@ -151,6 +164,25 @@ BsdfPtr Loader::defaultBsdf() {
     defaultBsdf_ = createBsdf(props, {}, "default-diffuse");
   }
   return defaultBsdf_;
+}
+
+// Mitsuba evaluates a mesh_attribute through the shape it shades: a shape without the attribute
+// (or not a mesh) fails there at render time, here at load.
+void Loader::checkMeshAttributes(const Element& shape, const BsdfPtr& bsdf, const Mesh* mesh) const {
+  const auto it = meshAttributesRead_.find(bsdf.get());
+  if (it == meshAttributesRead_.end()) return;
+  for (const std::string& name : it->second) {
+    if (!mesh) shape.fail("its bsdf reads the mesh attribute '" + name + "', and a " + shape.type + " has no attributes");
+    bool found = false;
+    std::string have;
+    for (const MeshAttribute& a : mesh->attributes) {
+      found = found || a.name == name;
+      have += (have.empty() ? "" : ", ") + a.name;
+    }
+    if (!found)
+      shape.fail("its bsdf reads the mesh attribute '" + name + "', which the mesh does not have (" +
+                 (have.empty() ? std::string("it has none") : "it has " + have) + ")");
+  }
 }
 
 int Loader::bsdfIndex(const BsdfPtr& bsdf) {

@@ -90,6 +90,8 @@ void Loader::buildEmitter(const std::shared_ptr<XmlFile>& file, const pugi::xml_
                            "' (defined at " + n.where + ") is not a texture");
       em.projection = n.texture;
     }
+    if (em.projection && !em.projection->meshAttribute().empty())
+      throw LocatedError(whereOf(*file, child) + ": a mesh_attribute texture reads the shape it shades; an emitter's image has none");
   }
   if (e.type == "area") {
     if (!inShape) e.fail("an area emitter must be nested inside a <shape>");

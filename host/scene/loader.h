@@ -99,6 +99,10 @@ class Loader {
     uint64_t nodes = 1;
   };
   std::map<const Bsdf*, BsdfTreeSize> bsdfTreeSizes_;
+  // Per built BSDF: the mesh attributes its mesh_attribute textures (its own and its nested
+  // BSDFs') read; a shape with that BSDF must carry them (shape_builder.cpp).
+  std::map<const Bsdf*, std::vector<std::string>> meshAttributesRead_;
+  void checkMeshAttributes(const Element& shape, const BsdfPtr& bsdf, const Mesh* mesh) const;
   // The steps of buildBsdf (bsdf_builder.cpp).
   void collectBsdfChildren(const std::shared_ptr<XmlFile>& file, const Element& e, std::vector<BsdfPtr>& nested,
                            std::vector<std::pair<pugi::xml_node, TexturePtr>>& textures);

@@ -113,6 +113,9 @@ Mesh buildMesh(MeshData data, const Mat4& toWorld, const MeshPolicy& policy) {
   mesh.uvs = std::move(data.uvs);
 
   mesh.triangles.reserve(data.triangles.size());
+  // Face attributes follow their triangles through the filter below.
+  mesh.attributes = std::move(data.attributes);
+  std::vector<size_t> keptTriangles;
   for (glm::uvec3 t : data.triangles) {
     const Vec3 &a = mesh.positions[t.x], &b = mesh.positions[t.y], &c = mesh.positions[t.z];
     // In double: |cross|² of a triangle with 1e10 coordinates overflows float, and is not degenerate.
@@ -123,7 +126,15 @@ Mesh buildMesh(MeshData data, const Mat4& toWorld, const MeshPolicy& policy) {
       continue;
     }
     if (mirrored != policy.flipNormals) std::swap(t.y, t.z);
+    keptTriangles.push_back(mesh.triangles.size() + mesh.degenerateSkipped);  // its index in data.triangles
     mesh.triangles.push_back(t);
+  }
+  for (MeshAttribute& a : mesh.attributes) {
+    if (!a.perFace) continue;
+    std::vector<float> kept;
+    kept.reserve(keptTriangles.size() * a.channels);
+    for (size_t i : keptTriangles) kept.insert(kept.end(), a.values.begin() + i * a.channels, a.values.begin() + (i + 1) * a.channels);
+    a.values = std::move(kept);
   }
 
   if (policy.faceNormals) return mesh;

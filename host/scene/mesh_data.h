@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "texture/mesh_attribute.h"
 
 namespace rc {
 
@@ -12,6 +13,7 @@ struct MeshData {
   std::vector<Vec3> normals;          // per vertex, or empty
   std::vector<Vec2> uvs;              // per vertex, or empty
   std::vector<glm::uvec3> triangles;  // indices into the vertex arrays, all in range
+  MeshAttributes attributes;          // per vertex, or per triangle (PLY files only)
 };
 
 }  // namespace rc

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "core/error.h"
@@ -222,6 +223,78 @@ PropertySlots findSlots(const PlyElement& e, bool isVertex, bool isFace) {
   return s;
 }
 
+// A vertex or face attribute: its name and the properties holding its channels, in order.
+struct AttributeSlots {
+  std::string name;
+  std::vector<int> props;
+};
+
+// Mitsuba's grouping of an element's other scalar properties into attributes (src/shapes/ply.h,
+// find_other_fields): r g b [a] or red green blue [alpha] anywhere make "<type>color"; then, in
+// declaration order, consecutive properties "<prefix>_<c>" whose postfixes run x y z w, r g b a,
+// 0 1 2 3 or 1 2 3 4 make "<type><prefix>" ("<type><prefix>_color" for r g b), kept when they
+// have 1 or 3 channels. Names without a one-letter postfix and repeated prefixes are skipped.
+std::vector<AttributeSlots> findAttributes(const PlyElement& e, const std::string& type, std::set<std::string> reserved) {
+  std::vector<AttributeSlots> out;
+  auto scalar = [&](const std::string& n) { return findProp(e, {n.c_str()}); };
+  for (const auto& names : {std::vector<std::string>{"r", "g", "b", "a"}, std::vector<std::string>{"red", "green", "blue", "alpha"}}) {
+    if (scalar(names[0]) < 0 || scalar(names[1]) < 0 || scalar(names[2]) < 0) continue;
+    AttributeSlots color{type + "color", {scalar(names[0]), scalar(names[1]), scalar(names[2])}};
+    if (scalar(names[3]) >= 0) color.props.push_back(scalar(names[3]));
+    out.push_back(color);
+    reserved.insert(names.begin(), names.end());
+    break;
+  }
+  static const char* kPostfixes[4] = {"xr01", "yg12", "zb23", "wa34"};  // [channel][scheme]
+  std::set<std::string> seen;
+  AttributeSlots current;
+  std::string prefix;
+  int scheme = -1;
+  auto flush = [&] {
+    if (scheme >= 0 && (current.props.size() == 1 || current.props.size() == 3)) {
+      current.name = type + prefix + (scheme == 1 ? "_color" : "");
+      out.push_back(current);
+      seen.insert(prefix);
+    }
+    current = AttributeSlots();
+    scheme = -1;
+  };
+  // Skips the properties from i on that start with p (Mitsuba's recovery from a bad sequence).
+  auto skipPrefix = [&](size_t& i, const std::string& p) {
+    while (i + 1 < e.props.size() && e.props[i + 1].name.rfind(p, 0) == 0) ++i;
+  };
+  for (size_t i = 0; i < e.props.size(); ++i) {
+    const PlyProperty& prop = e.props[i];
+    if (prop.isList || reserved.count(prop.name)) continue;
+    const size_t us = prop.name.find_last_of('_');
+    if (us == std::string::npos || prop.name.size() - us != 2) {  // no postfix, or a longer one
+      flush();
+      continue;
+    }
+    const std::string p = prop.name.substr(0, us);
+    const char c = prop.name[us + 1];
+    if (scheme >= 0 && p != prefix) flush();
+    if (scheme < 0) {
+      if (seen.count(p)) {
+        skipPrefix(i, p);
+        continue;
+      }
+      const char* at = std::strchr(kPostfixes[0], c);
+      if (!at || c == '\0') continue;
+      scheme = static_cast<int>(at - kPostfixes[0]);
+      prefix = p;
+    } else if (current.props.size() >= 4 || kPostfixes[current.props.size()][scheme] != c) {
+      current = AttributeSlots();
+      scheme = -1;
+      skipPrefix(i, p);
+      continue;
+    }
+    current.props.push_back(static_cast<int>(i));
+  }
+  flush();
+  return out;
+}
+
 // Reads one list property; the entries of the face's index list go to `face`, checked against
 // the vertices read so far.
 void readList(BodyReader& body, const PlyProperty& prop, bool isIndexList, size_t fileSize, size_t faceNo,
@@ -249,6 +322,19 @@ void readElement(BodyReader& body, const PlyElement& e, size_t fileSize, MeshDat
   const PropertySlots s = findSlots(e, isVertex, isFace);
   const bool hasN = s.hasNormals(), hasUv = s.hasUvs();
   if (e.props.empty()) return;  // nothing to read, however large the count (no empty loop of 2^63)
+  std::set<std::string> reserved;
+  for (int slot : {s.x, s.y, s.z, s.nx, s.ny, s.nz, s.u, s.v})
+    if (slot >= 0) reserved.insert(e.props[static_cast<size_t>(slot)].name);
+  const std::vector<AttributeSlots> slots =
+      isVertex || isFace ? findAttributes(e, isVertex ? "vertex_" : "face_", reserved) : std::vector<AttributeSlots>();
+  const size_t firstAttribute = mesh.attributes.size();
+  for (const AttributeSlots& a : slots) {
+    MeshAttribute attribute;
+    attribute.name = a.name;
+    attribute.perFace = isFace;
+    attribute.channels = static_cast<int>(a.props.size());
+    mesh.attributes.push_back(std::move(attribute));
+  }
   std::vector<double> vals(e.props.size());
   for (size_t k = 0; k < e.count; ++k) {
     std::vector<uint32_t> face;
@@ -269,6 +355,11 @@ void readElement(BodyReader& body, const PlyElement& e, size_t fileSize, MeshDat
       if (face.size() < 3) body.fail("face " + std::to_string(k) + " has fewer than 3 vertices");
       for (size_t j = 1; j + 1 < face.size(); ++j) mesh.triangles.emplace_back(face[0], face[j], face[j + 1]);
     }
+    // A face's values go to each of its triangles.
+    const size_t copies = isFace ? face.size() - 2 : 1;
+    for (size_t a = 0; a < slots.size(); ++a)
+      for (size_t copy = 0; copy < copies; ++copy)
+        for (int p : slots[a].props) mesh.attributes[firstAttribute + a].values.push_back(float(vals[static_cast<size_t>(p)]));
   }
 }
 

@@ -22,6 +22,7 @@ struct Mesh {
   std::vector<Vec3> normals;           // per vertex, empty → face normals (flat shading)
   std::vector<Vec2> uvs;               // per vertex, may be empty
   std::vector<glm::uvec3> triangles;   // degenerate (zero-area) triangles removed at load
+  MeshAttributes attributes;           // a PLY file's extra vertex/face values (face ones per triangle)
   int bsdf = -1;                       // index into Scene::bsdfs
   int emitter = -1;                    // index into Scene::emitters (area emitter), or -1
   size_t degenerateSkipped = 0;        // zero-area / NaN triangles dropped while loading

@@ -200,6 +200,7 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     unsupported(whereOf(*emitterFile, emitterNode) + ": an area emitter on a " + e.type + " is not supported");
     emitterNode = pugi::xml_node();  // lenient: the shape is kept without its emission
   }
+  if (e.type == "cylinder" || e.type == "sphere" || curve) checkMeshAttributes(e, bsdf, nullptr);
   if (curve) {
     if (flip) e.failParam("flip_normals", "a curve's normals cannot be flipped (its inside is never hit)");
     scene_.curves.push_back(makeCurve(e, toWorld, name, material, [&](const std::string& fn) { return resolvePath(e, fn); }));
@@ -216,6 +217,7 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     if (mesh.triangles.empty())
       unsupported(e.where() + ": the mesh has no valid triangles (" + std::to_string(mesh.degenerateSkipped) +
                   " degenerate ones dropped)");
+    checkMeshAttributes(e, bsdf, &mesh);
     mesh.name = name;
     mesh.bsdf = material;
     meshIndex = static_cast<int>(scene_.meshes.size());

@@ -1,4 +1,4 @@
-// <texture type="checkerboard|bitmap"> (parameters: texture/texture.h), top level or nested in a
+// <texture type="checkerboard|bitmap|mesh_attribute"> (parameters: texture/texture.h), top level or nested in a
 // <bsdf> under a parameter name.
 #include <cmath>
 #include <filesystem>
@@ -70,8 +70,15 @@ TexturePtr Loader::buildTexture(const std::shared_ptr<XmlFile>& file, const pugi
     texture = makeCheckerboard(c0, c1, uvTransformOf(e.transform("to_uv")));
   } else if (e.type == "bitmap") {
     texture = loadBitmap(*this, e, uvTransformOf(e.transform("to_uv")));
+  } else if (e.type == "mesh_attribute") {
+    const std::string name = e.located([&] { return e.props.getString("name", ""); });
+    // Mitsuba's test: the name contains one of the two (its attributes start with them).
+    if (name.find("vertex_") == std::string::npos && name.find("face_") == std::string::npos)
+      e.failParam("name", "a mesh attribute's name starts with 'vertex_' or 'face_', got '" + name + "'");
+    const float scale = e.located([&] { return e.props.getFloat("scale", 1.0f); });
+    texture = makeMeshAttributeTexture(name, scale);
   } else {
-    unsupported(e.where() + ": unknown plugin '" + e.type + "' (known: checkerboard, bitmap)");
+    unsupported(e.where() + ": unknown plugin '" + e.type + "' (known: checkerboard, bitmap, mesh_attribute)");
     registerId(e, Kind::Texture);
     return nullptr;
   }

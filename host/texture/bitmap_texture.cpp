@@ -18,7 +18,7 @@ class BitmapTexture final : public Texture {
     mean_ = sum / static_cast<float>(px_.size());
   }
 
-  Color eval(const Vec2& uvIn) const override {
+  Color eval(const TexturePoint& uvIn) const override {
     const Vec2 uv = toUv_.apply(uvIn);
     if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return mean_;
     const float x = uv.x * static_cast<float>(w_), y = uv.y * static_cast<float>(h_);

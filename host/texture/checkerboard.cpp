@@ -10,7 +10,7 @@ namespace {
 class Checkerboard final : public Texture {
  public:
   Checkerboard(const Color& c0, const Color& c1, const UvTransform& t) : c0_(c0), c1_(c1), toUv_(t) {}
-  Color eval(const Vec2& uvIn) const override {
+  Color eval(const TexturePoint& uvIn) const override {
     const Vec2 uv = toUv_.apply(uvIn);
     const bool mu = uv.x - std::floor(uv.x) > 0.5f, mv = uv.y - std::floor(uv.y) > 0.5f;
     return mu == mv ? c0_ : c1_;

@@ -150,7 +150,7 @@ TEST(BitmapGradient, BilinearDerivativeAndItsUvTransform) {
   EXPECT_NEAR(g.y, 0.0f, 1e-6f);
   // Against a central difference of the texture's own luminance.
   const float h = 1e-3f;
-  const float fd = (luminance(t->eval(Vec2(0.4f + h, 0.5f))) - luminance(t->eval(Vec2(0.4f - h, 0.5f)))) / (2 * h);
+  const float fd = (luminance(t->eval(TexturePoint(Vec2(0.4f + h, 0.5f)))) - luminance(t->eval(TexturePoint(Vec2(0.4f - h, 0.5f))))) / (2 * h);
   EXPECT_NEAR(t->gradient1(Vec2(0.4f, 0.5f)).x, fd, 1e-2f);
   // to_uv scaling u by ½ halves the derivative along u.
   UvTransform half;

@@ -76,7 +76,7 @@ TEST(MaskBsdf, TexturedOpacityAndTintedNestedPerPoint) {
   ASSERT_TRUE(m->spatiallyVarying());
   EXPECT_FALSE(m->tinted());  // the factor must not scale the pass-through
   const Vec3 wo = dirFrom(0.8, 0.0), wi = dirFrom(0.5, 2.0);
-  const BsdfPtr solid = m->at(Vec2(0.25f, 0.25f)), hole = m->at(Vec2(0.75f, 0.25f));
+  const BsdfPtr solid = m->at(TexturePoint(Vec2(0.25f, 0.25f))), hole = m->at(TexturePoint(Vec2(0.75f, 0.25f)));
   ASSERT_TRUE(solid && hole);
   // Solid: the tinted diffuse, colour0 of the tint; hole: nothing but pass-through.
   const Color f = solid->eval(wo, wi);

@@ -129,7 +129,7 @@ TEST(Principled, TexturedParametersPerPoint) {
   const TexturePtr rough = makeCheckerboard(Color(0.3f), Color(0.7f), UvTransform());
   const BsdfPtr b = createBsdf(props, {}, "p", {{"base_color", colors}, {"roughness", rough}});
   ASSERT_TRUE(b->spatiallyVarying());
-  const BsdfPtr here = b->at(Vec2(0.25f, 0.25f));
+  const BsdfPtr here = b->at(TexturePoint(Vec2(0.25f, 0.25f)));
   const BsdfPtr expected = make("principled", {rgb("base_color", 0.8f, 0.3f, 0.1f), num("roughness", 0.3)});
   const Vec3 wo = dirFrom(0.8, 0.2), wi = dirFrom(0.6, 3.0);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(here->eval(wo, wi)[c], expected->eval(wo, wi)[c], 1e-6f);

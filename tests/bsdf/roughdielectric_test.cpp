@@ -179,7 +179,7 @@ TEST(RoughDielectric, TexturedAlphaPerPoint) {
   EXPECT_EQ(textured->lobes(), uint32_t(kLobeGlossy | kLobeTransmission));
   const Vec3 wo = dirFrom(0.7, 0.2), wi = dirFrom(-0.6, 3.0);
   for (const auto& [uv, alpha] : {std::pair{Vec2(0.25f, 0.25f), 0.05}, std::pair{Vec2(0.75f, 0.25f), 0.55}}) {
-    const BsdfPtr here = textured->at(uv);
+    const BsdfPtr here = textured->at(TexturePoint(uv));
     ASSERT_TRUE(here);
     EXPECT_FALSE(here->spatiallyVarying());
     const BsdfPtr plain = make("roughdielectric", {str("distribution", "ggx"), num("alpha", alpha)});
@@ -189,7 +189,7 @@ TEST(RoughDielectric, TexturedAlphaPerPoint) {
   // A uniform BSDF is its own point BSDF.
   const BsdfPtr uniform = ggx03();
   BsdfPtr holder;
-  EXPECT_EQ(&bsdfAt(*uniform, Vec2(0.5f), holder), uniform.get());
+  EXPECT_EQ(&bsdfAt(*uniform, TexturePoint(Vec2(0.5f)), holder), uniform.get());
   EXPECT_FALSE(holder);
   // Keys differ with the texture's content.
   const BsdfPtr other = createBsdf(props, {}, "glass2", {{"alpha", makeCheckerboard(Color(0.05f), Color(0.6f), UvTransform())}});

@@ -41,11 +41,11 @@ TEST(BsdfPluginsLoad, MaterialsForRealScenes) {
   }
   // The mask: solid where the grey checkerboard is 1, a hole where it is 0.
   const Vec3 up(0, 0, 1), wi = glm::normalize(Vec3(0.2f, 0.1f, 1.0f));
-  EXPECT_NEAR(byId.at("leaf")->at(Vec2(0.25f, 0.25f))->eval(up, wi).r, 0.8f * wi.z / kPi, 1e-5f);
-  EXPECT_EQ(byId.at("leaf")->at(Vec2(0.75f, 0.25f))->eval(up, wi), Color(0.0f));
+  EXPECT_NEAR(byId.at("leaf")->at(TexturePoint(Vec2(0.25f, 0.25f)))->eval(up, wi).r, 0.8f * wi.z / kPi, 1e-5f);
+  EXPECT_EQ(byId.at("leaf")->at(TexturePoint(Vec2(0.75f, 0.25f)))->eval(up, wi), Color(0.0f));
   // The plastic's diffuse part follows the texture.
-  const Color red = byId.at("tiles")->at(Vec2(0.25f, 0.25f))->eval(up, wi);
-  const Color grey = byId.at("tiles")->at(Vec2(0.75f, 0.25f))->eval(up, wi);
+  const Color red = byId.at("tiles")->at(TexturePoint(Vec2(0.25f, 0.25f)))->eval(up, wi);
+  const Color grey = byId.at("tiles")->at(TexturePoint(Vec2(0.75f, 0.25f)))->eval(up, wi);
   EXPECT_GT(red.r, 4.0f * red.g);
   EXPECT_NEAR(grey.r, grey.g, 1e-6f);
 }

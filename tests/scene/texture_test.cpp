@@ -13,14 +13,14 @@ namespace {
 TEST(Textures, CheckerboardFollowsMitsuba) {
   const Color c0(1, 0, 0), c1(0, 0, 1);
   const TexturePtr t = makeCheckerboard(c0, c1, UvTransform{});
-  EXPECT_EQ(t->eval({0.25f, 0.25f}), c0);  // both fractional parts ≤ ½
-  EXPECT_EQ(t->eval({0.75f, 0.75f}), c0);  // both > ½
-  EXPECT_EQ(t->eval({0.75f, 0.25f}), c1);
-  EXPECT_EQ(t->eval({-0.25f, 0.25f}), c1);  // frac(−0.25) = 0.75
+  EXPECT_EQ(t->eval(TexturePoint(Vec2(0.25f, 0.25f))), c0);  // both fractional parts ≤ ½
+  EXPECT_EQ(t->eval(TexturePoint(Vec2(0.75f, 0.75f))), c0);  // both > ½
+  EXPECT_EQ(t->eval(TexturePoint(Vec2(0.75f, 0.25f))), c1);
+  EXPECT_EQ(t->eval(TexturePoint(Vec2(-0.25f, 0.25f))), c1);  // frac(−0.25) = 0.75
   UvTransform twice;
   twice.m = Mat3(2.0f);
   twice.m[2][2] = 1.0f;
-  EXPECT_EQ(makeCheckerboard(c0, c1, twice)->eval({0.3f, 0.1f}), c1);  // (0.6, 0.2)
+  EXPECT_EQ(makeCheckerboard(c0, c1, twice)->eval(TexturePoint(Vec2(0.3f, 0.1f))), c1);  // (0.6, 0.2)
   EXPECT_EQ(t->mean(), 0.5f * (c0 + c1));
 }
 
@@ -29,15 +29,15 @@ TEST(Textures, BitmapBilinearAndWrapModes) {
   auto tex = [&](TextureFilter f, TextureWrap w) { return makeBitmapTexture(2, 1, {a, b}, f, w, UvTransform{}); };
   const TexturePtr repeat = tex(TextureFilter::Bilinear, TextureWrap::Repeat);
   // Texel centres at u = 0.25 and 0.75.
-  EXPECT_EQ(repeat->eval({0.25f, 0.5f}), a);
-  EXPECT_EQ(repeat->eval({0.75f, 0.5f}), b);
-  EXPECT_NEAR(glm::length(repeat->eval({0.5f, 0.5f}) - 0.5f * (a + b)), 0.0f, 1e-6f);
-  EXPECT_NEAR(glm::length(repeat->eval({0.0f, 0.5f}) - 0.5f * (a + b)), 0.0f, 1e-6f);  // wraps to the last texel
-  EXPECT_NEAR(glm::length(repeat->eval({1.25f, 0.5f}) - a), 0.0f, 1e-6f);
-  EXPECT_EQ(tex(TextureFilter::Bilinear, TextureWrap::Clamp)->eval({0.0f, 0.5f}), a);
-  EXPECT_EQ(tex(TextureFilter::Bilinear, TextureWrap::Mirror)->eval({0.0f, 0.5f}), a);  // texel −1 mirrors to 0
-  EXPECT_EQ(tex(TextureFilter::Nearest, TextureWrap::Repeat)->eval({0.49f, 0.5f}), a);
-  EXPECT_EQ(tex(TextureFilter::Nearest, TextureWrap::Repeat)->eval({0.51f, 0.5f}), b);
+  EXPECT_EQ(repeat->eval(TexturePoint(Vec2(0.25f, 0.5f))), a);
+  EXPECT_EQ(repeat->eval(TexturePoint(Vec2(0.75f, 0.5f))), b);
+  EXPECT_NEAR(glm::length(repeat->eval(TexturePoint(Vec2(0.5f, 0.5f))) - 0.5f * (a + b)), 0.0f, 1e-6f);
+  EXPECT_NEAR(glm::length(repeat->eval(TexturePoint(Vec2(0.0f, 0.5f))) - 0.5f * (a + b)), 0.0f, 1e-6f);  // wraps to the last texel
+  EXPECT_NEAR(glm::length(repeat->eval(TexturePoint(Vec2(1.25f, 0.5f))) - a), 0.0f, 1e-6f);
+  EXPECT_EQ(tex(TextureFilter::Bilinear, TextureWrap::Clamp)->eval(TexturePoint(Vec2(0.0f, 0.5f))), a);
+  EXPECT_EQ(tex(TextureFilter::Bilinear, TextureWrap::Mirror)->eval(TexturePoint(Vec2(0.0f, 0.5f))), a);  // texel −1 mirrors to 0
+  EXPECT_EQ(tex(TextureFilter::Nearest, TextureWrap::Repeat)->eval(TexturePoint(Vec2(0.49f, 0.5f))), a);
+  EXPECT_EQ(tex(TextureFilter::Nearest, TextureWrap::Repeat)->eval(TexturePoint(Vec2(0.51f, 0.5f))), b);
 }
 
 void writePng(const std::string& path, unsigned char value) {
@@ -61,8 +61,8 @@ TEST(Textures, BitmapFilesAreLinearisedUnlessRaw) {
   ASSERT_EQ(s.bsdfs.size(), 2u);
   const float srgb = 128.0f / 255.0f, linear = std::pow((srgb + 0.055f) / 1.055f, 2.4f);  // the sRGB curve
   ASSERT_TRUE(s.bsdfs[0]->tinted());
-  EXPECT_NEAR(s.bsdfs[0]->tint({0.3f, 0.6f}, {0, 0, 1}).g, linear, 1e-5f);
-  EXPECT_NEAR(s.bsdfs[1]->tint({0.3f, 0.6f}, {0, 0, 1}).g, srgb, 1e-5f);
+  EXPECT_NEAR(s.bsdfs[0]->tint(TexturePoint(Vec2(0.3f, 0.6f)), {0, 0, 1}).g, linear, 1e-5f);
+  EXPECT_NEAR(s.bsdfs[1]->tint(TexturePoint(Vec2(0.3f, 0.6f)), {0, 0, 1}).g, srgb, 1e-5f);
 }
 
 // Mitsuba's BMP and TGA readers mark 8-bit files sRGB (Bitmap::read_bmp / read_tga), as PNG and JPEG.
@@ -75,7 +75,7 @@ TEST(Textures, BmpAndTgaFilesAreLinearisedToo) {
                                                        "name=\"reflectance\"><string name=\"filename\" value=\"") +
                                            name + "\"/></texture></bsdf></shape>"));
     ASSERT_TRUE(s.bsdfs.at(0)->tinted()) << name;
-    EXPECT_NEAR(s.bsdfs[0]->tint({0.3f, 0.6f}, {0, 0, 1}).g, linear, 1e-5f) << name;
+    EXPECT_NEAR(s.bsdfs[0]->tint(TexturePoint(Vec2(0.3f, 0.6f)), {0, 0, 1}).g, linear, 1e-5f) << name;
   }
 }
 
@@ -93,9 +93,9 @@ TEST(Textures, TexturedReflectanceScalesAUnitBsdf) {
   ASSERT_TRUE(floor.tinted());
   const Vec3 up(0, 0, 1), wi = glm::normalize(Vec3(0.3f, 0.2f, 1.0f));
   EXPECT_NEAR(floor.eval(up, wi).r, wi.z / kPi, 1e-6f);                              // reflectance 1 ...
-  EXPECT_NEAR(glm::length(floor.tint({0.05f, 0.05f}, up) - Color(0.8f, 0.1f, 0.1f)), 0.0f, 1e-6f);  // ... times the texture
-  EXPECT_NEAR(glm::length(floor.tint({0.2f, 0.05f}, up) - Color(0.1f)), 0.0f, 1e-6f);               // u' = 0.8
-  EXPECT_NEAR(glm::length(floor.tint({0.05f, 0.05f}, -up) - Color(0.8f, 0.1f, 0.1f)), 0.0f, 1e-6f); // back side, same BSDF
+  EXPECT_NEAR(glm::length(floor.tint(TexturePoint(Vec2(0.05f, 0.05f)), up) - Color(0.8f, 0.1f, 0.1f)), 0.0f, 1e-6f);  // ... times the texture
+  EXPECT_NEAR(glm::length(floor.tint(TexturePoint(Vec2(0.2f, 0.05f)), up) - Color(0.1f)), 0.0f, 1e-6f);               // u' = 0.8
+  EXPECT_NEAR(glm::length(floor.tint(TexturePoint(Vec2(0.05f, 0.05f)), -up) - Color(0.8f, 0.1f, 0.1f)), 0.0f, 1e-6f); // back side, same BSDF
   EXPECT_TRUE(s.bsdfs[1]->tinted());
 }
 
