@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "geometry/curve_geometry.h"
 #include "geometry/cylinder_geometry.h"
+#include "geometry/embree_attach.h"
 #include "geometry/face_normal.h"
 #include "geometry/ray_counter.h"
 #include "geometry/sphere_intersect.h"
@@ -30,10 +31,6 @@ constexpr float kFloatEps = 5.96046448e-8f;  // 2^-24
 // Error bound of a point reconstructed from barycentrics (a handful of roundings) or on a sphere,
 // relative to the magnitude of the coordinates involved, with a generous safety factor.
 constexpr float kPointErrorUlps = 32.0f;
-// Embree's round-curve test refines its hit numerically, to a tolerance relative to the tube's
-// radius rather than to float ulps; this fraction of the radius bounds that error (tests/render
-// curve_test.cpp: rays spawned from curve hits never find the curve again).
-constexpr float kCurveRadiusError = 1e-4f;
 
 inline float maxAbs(const Vec3& p) { return std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}); }
 
@@ -137,7 +134,6 @@ struct Accel::Impl {
   RTCScene scene = nullptr;
   std::vector<int> geomToMesh;  // Embree geomID → mesh index, −1 for the sphere geometry
   std::vector<int> geomToCurve;  // Embree geomID → curve index, −1 for other geometry
-  std::vector<float> curveRadius;  // per curve, its largest radius (curveHit's error bound)
   std::vector<TriangleConstants> meshConstants;  // per mesh (empty for meshes not in the BVH)
   unsigned sphereGeom = RTC_INVALID_GEOMETRY_ID;
   unsigned cylinderGeom = RTC_INVALID_GEOMETRY_ID;
@@ -202,9 +198,7 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
         throw Error("mesh '" + mesh.name + "': triangle " + std::to_string(i) + " indexes a missing vertex");
       idx[3 * i] = t.x; idx[3 * i + 1] = t.y; idx[3 * i + 2] = t.z;
     }
-    rtcCommitGeometry(g);
-    const unsigned id = rtcAttachGeometry(im.scene, g);
-    rtcReleaseGeometry(g);
+    const unsigned id = commitAndAttach(im.scene, g);
     im.check(("mesh '" + mesh.name + "'").c_str());
     if (im.geomToMesh.size() <= id) im.geomToMesh.resize(id + 1, -1);
     im.geomToMesh[id] = static_cast<int>(m);
@@ -226,9 +220,7 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
     rtcSetGeometryBoundsFunction(g, &sphereBounds, nullptr);
     rtcSetGeometryIntersectFunction(g, &sphereIntersect);
     rtcSetGeometryOccludedFunction(g, &sphereOccluded);
-    rtcCommitGeometry(g);
-    im.sphereGeom = rtcAttachGeometry(im.scene, g);
-    rtcReleaseGeometry(g);
+    im.sphereGeom = commitAndAttach(im.scene, g);
     im.check("spheres");
     if (im.geomToMesh.size() <= im.sphereGeom) im.geomToMesh.resize(im.sphereGeom + 1, -1);
   }
@@ -245,7 +237,6 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
     if (im.geomToMesh.size() <= id) im.geomToMesh.resize(id + 1, -1);
     if (im.geomToCurve.size() <= id) im.geomToCurve.resize(id + 1, -1);
     im.geomToCurve[id] = static_cast<int>(c);
-    im.curveRadius.push_back(curveMaxRadius(scene.curves[c]));
   }
 
   rtcCommitScene(im.scene);
@@ -344,16 +335,16 @@ Hit cylinderHit(const Cylinder& c, const Ray& ray, float t) {
 }
 
 // Embree's curve parameter u on segment `prim`; the point is o + t·d (Mitsuba's too), whose error
-// is relative to the ray's coordinates, plus Embree's iterative curve test's, which is relative to
-// the tube's radius.
-Hit curveHit(const Curve& c, int index, float maxRadius, const Ray& ray, unsigned prim, float u, float t) {
+// is relative to the ray's coordinates (tests/render curve_test.cpp: with the offset this gives,
+// rays spawned from curve hits never find the tube again).
+Hit curveHit(const Curve& c, int index, const Ray& ray, unsigned prim, float u, float t) {
   Hit h;
   h.t = t;
   h.curve = index;
   h.prim = static_cast<int>(prim);
   h.bsdf = c.bsdf;
   h.p = ray.o + t * ray.d;
-  h.pError = kPointErrorUlps * kFloatEps * (maxAbs(ray.o) + t * maxAbs(ray.d)) + kCurveRadiusError * maxRadius;
+  h.pError = kPointErrorUlps * kFloatEps * (maxAbs(ray.o) + t * maxAbs(ray.d));
   const CurveHitGeometry g = curveHitGeometry(c, prim, u, h.p);
   h.ng = h.ns = g.n;
   h.dpdu = g.dpdu;
@@ -384,7 +375,7 @@ Hit Accel::hitOf(const Ray& ray, unsigned geomID, unsigned primID, float u, floa
   if (geomID == impl_->cylinderGeom) return cylinderHit(scene_.cylinders[primID], ray, tfar);
   if (geomID < impl_->geomToCurve.size() && impl_->geomToCurve[geomID] >= 0) {
     const int c = impl_->geomToCurve[geomID];
-    return curveHit(scene_.curves[c], c, impl_->curveRadius[c], ray, primID, u, tfar);
+    return curveHit(scene_.curves[c], c, ray, primID, u, tfar);
   }
   const int m = impl_->geomToMesh[geomID];
   return triangleHit(scene_.meshes[m], impl_->meshConstants[m], m, primID, u, v, tfar);

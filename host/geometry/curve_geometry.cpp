@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "geometry/embree_attach.h"
 #include "core/frame.h"
 
 namespace rc {
@@ -115,12 +116,6 @@ CurveHitGeometry curveHitGeometry(const Curve& c, unsigned segment, float vLocal
   return c.basis == CurveBasis::Linear ? linearHit(c, segment, vLocal, p) : bsplineHit(c, segment, vLocal, p);
 }
 
-float curveMaxRadius(const Curve& c) {
-  float r = 0.0f;
-  for (const Vec4& p : c.points) r = std::max(r, p.w);
-  return r;
-}
-
 void curveBounds(const Curve& c, Vec3& lo, Vec3& hi) {
   lo = Vec3(INFINITY);
   hi = Vec3(-INFINITY);
@@ -164,10 +159,7 @@ unsigned attachCurve(RTCDevice device, RTCScene scene, const Curve& c) {
   std::memcpy(idx, c.segments.data(), c.segments.size() * sizeof(unsigned));
   rtcSetGeometryIntersectFilterFunction(g, &cullInside);
   rtcSetGeometryOccludedFilterFunction(g, &cullInside);
-  rtcCommitGeometry(g);
-  const unsigned id = rtcAttachGeometry(scene, g);
-  rtcReleaseGeometry(g);
-  return id;
+  return commitAndAttach(scene, g);
 }
 
 }  // namespace rc

@@ -20,9 +20,6 @@ struct CurveHitGeometry {
 // The hit at world point p on `segment` of c, at Embree's curve parameter vLocal (its hit.u).
 CurveHitGeometry curveHitGeometry(const Curve& c, unsigned segment, float vLocal, const Vec3& p);
 
-// The largest control-point radius of c (the scale of Embree's intersection error there).
-float curveMaxRadius(const Curve& c);
-
 // World-space bounds of c: its control points padded by their radii (a B-spline lies in the
 // convex hull of its control points, so this holds the tube).
 void curveBounds(const Curve& c, Vec3& lo, Vec3& hi);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/embree_attach.h"
 #include "geometry/user_geometry_hit.h"
 
 namespace rc {
@@ -119,10 +120,7 @@ unsigned attachCylinders(RTCDevice device, RTCScene scene, const std::vector<Cyl
   rtcSetGeometryBoundsFunction(g, &boundsCallback, nullptr);
   rtcSetGeometryIntersectFunction(g, &intersectCallback);
   rtcSetGeometryOccludedFunction(g, &occludedCallback);
-  rtcCommitGeometry(g);
-  const unsigned id = rtcAttachGeometry(scene, g);
-  rtcReleaseGeometry(g);
-  return id;
+  return commitAndAttach(scene, g);
 }
 
 }  // namespace rc

@@ -25,25 +25,21 @@ void finiteSceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
     for (const glm::uvec3& t : m.triangles)
       for (int k = 0; k < 3; ++k)
         if (t[k] < m.positions.size()) add(m.positions[t[k]]);
-  for (const Sphere& s : scene.spheres) {
-    const Vec3 a = s.center - Vec3(s.radius), b = s.center + Vec3(s.radius);
-    if (!finite(a) || !finite(b)) continue;
+  // A shape's box counts only when both corners are finite.
+  auto addBox = [&](const Vec3& a, const Vec3& b) {
+    if (!finite(a) || !finite(b)) return;
     add(a);
     add(b);
-  }
+  };
+  for (const Sphere& s : scene.spheres) addBox(s.center - Vec3(s.radius), s.center + Vec3(s.radius));
+  Vec3 a, b;
   for (const Cylinder& c : scene.cylinders) {
-    Vec3 a, b;
     cylinderBounds(c, a, b);
-    if (!finite(a) || !finite(b)) continue;
-    add(a);
-    add(b);
+    addBox(a, b);
   }
   for (const Curve& c : scene.curves) {
-    Vec3 a, b;
     curveBounds(c, a, b);
-    if (!finite(a) || !finite(b)) continue;
-    add(a);
-    add(b);
+    addBox(a, b);
   }
   if (!(lo.x <= hi.x) || !finite(hi - lo)) {
     lo = Vec3(-1.0f);

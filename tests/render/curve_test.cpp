@@ -9,6 +9,7 @@
 
 #include "core/rng.h"
 #include "geometry/accel.h"
+#include "render/ray_probe.h"
 #include "scene/scene_test_util.h"
 
 namespace rc::test {
@@ -16,13 +17,6 @@ namespace {
 
 constexpr float kPiF = 3.14159265358979f;
 constexpr float kR = 0.2f;
-
-Hit cast(const Accel& accel, Vec3 o, Vec3 d) {
-  Ray r;
-  r.o = o;
-  r.d = glm::normalize(d);
-  return accel.intersect(r);
-}
 
 Scene curveScene(TempDir& dir, const std::string& type, const std::string& points) {
   dir.write("c.txt", points);
@@ -74,13 +68,7 @@ void expectStraightTubeSide(const Accel& accel, bool bspline) {
   // Beside the tube; from inside (Mitsuba culls the inside; Embree alone would report the exit).
   EXPECT_FALSE(cast(accel, {0.5f, -5, kR * 1.05f}, {0, 1, 0}).valid());
   EXPECT_FALSE(cast(accel, {0.5f, 0, 0}, {0, 1, 0}).valid());
-  Ray shadow;
-  shadow.o = Vec3(0.5f, -5, 0);
-  shadow.d = Vec3(0, 1, 0);
-  shadow.tMax = 4.7f;
-  EXPECT_FALSE(accel.occluded(shadow));
-  shadow.tMax = 4.9f;
-  EXPECT_TRUE(accel.occluded(shadow));
+  expectBlockedBetween(accel, {0.5f, -5, 0}, {0, 1, 0}, 4.7f, 4.9f);
 }
 
 TEST(Curve, LinearCurveIsACapsule) {

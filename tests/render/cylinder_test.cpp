@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "geometry/accel.h"
+#include "render/ray_probe.h"
 #include "scene/scene_test_util.h"
 
 namespace rc::test {
@@ -15,13 +16,6 @@ constexpr float kPiF = 3.14159265358979f;
 // Radius 0.5 from (1, 0, 0) to (1, 0, 2): the axis along world z.
 const std::string kTube = "<shape type=\"cylinder\"><point name=\"p0\" value=\"1, 0, 0\"/><point name=\"p1\" value=\"1, 0, 2\"/>"
                           "<float name=\"radius\" value=\"0.5\"/><bsdf type=\"diffuse\"/></shape>";
-
-Hit cast(const Accel& accel, Vec3 o, Vec3 d) {
-  Ray r;
-  r.o = o;
-  r.d = glm::normalize(d);
-  return accel.intersect(r);
-}
 
 TEST(Cylinder, HitsTheSideWithMitsubasNormalAndUv) {
   TempDir dir;
@@ -66,13 +60,7 @@ TEST(Cylinder, OpenEndsShowTheInsideAndAxisRaysMiss) {
   // Passing beside the tube, and past its end.
   EXPECT_FALSE(cast(accel, {1.6f, -5, 1}, {0, 1, 0}).valid());
   EXPECT_FALSE(cast(accel, {1, -5, 2.1f}, {0, 1, 0}).valid());
-  Ray shadow;
-  shadow.o = Vec3(1, -5, 1);
-  shadow.d = Vec3(0, 1, 0);
-  shadow.tMax = 4.4f;
-  EXPECT_FALSE(accel.occluded(shadow));
-  shadow.tMax = 4.6f;
-  EXPECT_TRUE(accel.occluded(shadow));
+  expectBlockedBetween(accel, {1, -5, 1}, {0, 1, 0}, 4.4f, 4.6f);
 }
 
 TEST(Cylinder, FlipNormalsAndToWorld) {
