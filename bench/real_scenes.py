@@ -8,7 +8,9 @@ else changed; included files are copied the same way) and records
   lenient                   rcache --lenient renders it (and how many substitutions it listed)
   mitsuba                   Mitsuba 3 (scalar_rgb) renders it
 and, where both rcache's path tracer and Mitsuba render it, compares them (rcache with the file's own
-integrator where it takes it, e.g. `direct`, else --integrator path; compare_integrator says which):
+integrator where it takes it, e.g. `direct`, else --integrator path; compare_integrator says which;
+--compare-integrator NAME compares that one instead — a file asking for `path` is rendered by rcache
+under `--integrator auto`, so `--compare-integrator path` is what checks the path tracer there):
   mean_ratio                per-channel mean(rcache) / mean(Mitsuba)
   block_z                   the largest |rcache − Mitsuba| of a 16-px block mean in units of its noise
                             (noise from two rcache seeds, pooled over the block's 4×4-px sub-blocks so
@@ -141,6 +143,7 @@ def main():
     ap.add_argument("--timeout", type=int, default=300)
     ap.add_argument("--no-mitsuba", action="store_true")
     ap.add_argument("--only", nargs="*", help="substrings of scene paths to run")
+    ap.add_argument("--compare-integrator", help="compare this integrator (e.g. path, rcache) instead of the file's")
     args = ap.parse_args()
     rcache = os.path.abspath(args.rcache)
     copy = os.path.join(args.work, "corpus")
@@ -179,16 +182,16 @@ def main():
                 # direct illumination, not as the path tracer --integrator path would make of it),
                 # else the path tracer.
                 imgs = []
-                own = True
+                own = args.compare_integrator is None
                 for seed in (1, 2):
                     img = os.path.join(out, "%s_path_s%d.exr" % (tag, seed))
                     flags = ["--spp", str(args.spp), "--seed", str(seed), "-o", img]
                     rc, text = run(base + flags, args.timeout) if own else (1, "")
                     if rc != 0:
                         own = False
-                        rc, text = run(base + ["--integrator", "path"] + flags, args.timeout)
+                        rc, text = run(base + ["--integrator", args.compare_integrator or "path"] + flags, args.timeout)
                     imgs.append(img if rc == 0 else None)
-                row["compare_integrator"] = "file's" if own else "path"
+                row["compare_integrator"] = "file's" if own else args.compare_integrator or "path"
                 if all(imgs):
                     a, b, m = load_exr(imgs[0]), load_exr(imgs[1]), load_exr(ref)
                     if a.shape == m.shape:
