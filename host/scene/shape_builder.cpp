@@ -86,7 +86,7 @@ Cylinder makeCylinder(const Element& e, const Mat4& toWorld, const std::string& 
 //                         written (Mitsuba: "the control points' radii are invariant to this
 //                         transformation")
 // No flip_normals: the normal points away from the curve's axis, and rays from inside miss
-// (Embree culls the inside of round curves, in Mitsuba as here).
+// (Mitsuba culls them; so does geometry/curve_geometry's filter).
 template <class Resolve>
 Curve makeCurve(const Element& e, const Mat4& toWorld, const std::string& name, int material, const Resolve& resolve) {
   const std::string fn = e.located([&] { return e.props.getString("filename", ""); });
@@ -99,10 +99,11 @@ Curve makeCurve(const Element& e, const Mat4& toWorld, const std::string& name, 
   c.points = std::move(data.points);
   c.segments = std::move(data.segments);
   for (Vec4& p : c.points) {
-    const Vec4 w = toWorld * Vec4(Vec3(p), 1.0f);
+    const Vec4 h = toWorld * Vec4(Vec3(p), 1.0f);
+    const Vec3 w = Vec3(h) / h.w;  // a point: Mitsuba divides by the projective coordinate
     if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z))
       e.failParam("to_world", "a control point of '" + fn + "' is not finite in world space");
-    p = Vec4(Vec3(w), p.w);
+    p = Vec4(w, p.w);
   }
   c.bsdf = material;
   return c;

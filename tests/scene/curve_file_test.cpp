@@ -72,6 +72,11 @@ TEST(CurveFile, ShapesMovePositionsButNotRadii) {
   EXPECT_EQ(s.curves[1].basis, CurveBasis::BSpline);
   EXPECT_EQ(s.curves[1].segments, (std::vector<uint32_t>{0}));
   EXPECT_NE(s.curves[1].bsdf, lin.bsdf);
+  // A projective to_world: points are divided by w, as Mitsuba's Transform does for a point.
+  const Scene p = loadText(dir, sceneXml("<shape type=\"linearcurve\"><string name=\"filename\" value=\"c.txt\"/>"
+                                         "<transform name=\"to_world\"><matrix value=\"1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 2\"/>"
+                                         "</transform></shape>"));
+  EXPECT_EQ(p.curves.at(0).points[1], Vec4(0.5f, 0, 0, 0.2f));
 }
 
 TEST(CurveFile, ShapeErrorsNameTheSceneLine) {
