@@ -1,7 +1,7 @@
 // Sampling routines against their own pdf(): a chi-square goodness-of-fit test per configuration
 // (cosθ × φ histogram of 100k samples vs pdf integrated over each bin, Šidák-corrected 1e-3 level
 // over all configurations, as Mitsuba's chi2 tests), plus sample()'s weight and pdf == eval/pdf and
-// pdf() for every continuous sample.
+// pdf() for every continuous sample, and evalPdf() == (eval(), pdf()) exactly.
 #include <gtest/gtest.h>
 
 #include "bsdf_test_util.h"
@@ -121,6 +121,28 @@ TEST_P(BsdfSampling, WeightIsEvalOverPdf) {
     for (int ch = 0; ch < 3; ++ch) ASSERT_NEAR(s->weight[ch], f[ch] / pdf, 1e-3f * f[ch] / pdf + 1e-7f) << c.name;
   }
   EXPECT_GT(continuous, 0) << c.name;
+}
+
+// evalPdf (one call where eval and pdf share work) gives eval's and pdf's values bit for bit: for
+// sampled directions and for directions all over the sphere (below the surface, grazing).
+TEST_P(BsdfSampling, EvalPdfIsEvalAndPdfExactly) {
+  const SamplingCase& c = kCases[GetParam()];
+  const BsdfPtr bsdf = c.make();
+  const Vec3 wo = dirFrom(c.cosThetaO, c.phiO);
+  Rng rng(91 + GetParam(), 5);
+  int nonZero = 0;
+  for (int k = 0; k < 4000; ++k) {
+    Vec3 wi = uniformSphere(rng);
+    if (k % 2 == 0)
+      if (const auto s = bsdf->sample(wo, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()))) wi = s->wi;
+    const BsdfValue both = bsdf->evalPdf(wo, wi);
+    const Color f = bsdf->eval(wo, wi);
+    const float pdf = bsdf->pdf(wo, wi);
+    for (int ch = 0; ch < 3; ++ch) ASSERT_EQ(both.f[ch], f[ch]) << c.name << " wi " << wi.x << " " << wi.y << " " << wi.z;
+    ASSERT_EQ(both.pdf, pdf) << c.name << " wi " << wi.x << " " << wi.y << " " << wi.z;
+    if (pdf > 0.0f && maxComponent(f) > 0.0f) ++nonZero;
+  }
+  EXPECT_GT(nonZero, 100) << c.name;
 }
 
 INSTANTIATE_TEST_SUITE_P(All, BsdfSampling, ::testing::Range(0, kNumCases),
