@@ -84,12 +84,15 @@ const SamplingCase kCases[] = {
 };
 constexpr int kNumCases = sizeof(kCases) / sizeof(kCases[0]);
 
-class BsdfSampling : public ::testing::TestWithParam<int> {};
-
-TEST_P(BsdfSampling, ChiSquare) {
+// Each test's case, its BSDF and its viewer direction.
+class BsdfSampling : public ::testing::TestWithParam<int> {
+ protected:
   const SamplingCase& c = kCases[GetParam()];
   const BsdfPtr bsdf = c.make();
   const Vec3 wo = dirFrom(c.cosThetaO, c.phiO);
+};
+
+TEST_P(BsdfSampling, ChiSquare) {
   const Chi2Result r = chi2ForBsdf(*bsdf, wo, 1000 + GetParam());
   // Šidák: every configuration at level α' so that the whole suite has false-alarm rate 1e-3.
   const double alpha = 1.0 - std::pow(1.0 - 1e-3, 1.0 / kNumCases);
@@ -99,9 +102,6 @@ TEST_P(BsdfSampling, ChiSquare) {
 }
 
 TEST_P(BsdfSampling, WeightIsEvalOverPdf) {
-  const SamplingCase& c = kCases[GetParam()];
-  const BsdfPtr bsdf = c.make();
-  const Vec3 wo = dirFrom(c.cosThetaO, c.phiO);
   Rng rng(77 + GetParam(), 3);
   int continuous = 0;
   for (int k = 0; k < 2000; ++k) {
@@ -126,9 +126,6 @@ TEST_P(BsdfSampling, WeightIsEvalOverPdf) {
 // evalPdf (one call where eval and pdf share work) gives eval's and pdf's values bit for bit: for
 // sampled directions and for directions all over the sphere (below the surface, grazing).
 TEST_P(BsdfSampling, EvalPdfIsEvalAndPdfExactly) {
-  const SamplingCase& c = kCases[GetParam()];
-  const BsdfPtr bsdf = c.make();
-  const Vec3 wo = dirFrom(c.cosThetaO, c.phiO);
   Rng rng(91 + GetParam(), 5);
   int nonZero = 0;
   for (int k = 0; k < 4000; ++k) {
