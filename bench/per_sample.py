@@ -18,6 +18,8 @@ Renderers (each a whole process, same scene file, same -D res, same thread count
   rcache_final (with --final) rcache --integrator rcache: the final pass's slope (with
                -D follow_budget=false the fill is the same at both sample counts, so it cancels)
 
+With --no-mitsuba only the rcache builds run (an A/B of `path` against `path_ref`).
+
 Usage (repository root, after scripts/build.sh):
   /root/.cache/rcache/bench-venv/bin/python bench/per_sample.py --res 256 --threads 2 \
       [--spp 16 80] [--reps 3] [--scenes cornell_glossy furnace] [--rcache-ref /work/main/build/rcache] [--final]
@@ -73,6 +75,7 @@ def main():
     ap.add_argument("--reps", type=int, default=3)
     ap.add_argument("--scenes", nargs="*", default=SCENES)
     ap.add_argument("--python", default=sys.executable, help="a Python with mitsuba")
+    ap.add_argument("--no-mitsuba", action="store_true", help="rcache builds only (an A/B of two builds)")
     args = ap.parse_args()
     env = dict(os.environ)
     env.setdefault("DRJIT_LIBLLVM_PATH", "/usr/lib/x86_64-linux-gnu/libLLVM-19.so")
@@ -84,9 +87,10 @@ def main():
         out = os.path.join(work, scene)
         rc = lambda exe, integ: pin([exe, path, "--integrator", integ, "--spp", str(spp), "-D", "res=%d" % args.res,
                                      "-t", str(args.threads), "--quiet", "-o", out + "_%s.exr" % integ], args.threads)
-        cmds = {"mitsuba": pin([args.python, "-c", MITSUBA, path, out + "_mi.exr", str(args.res), str(spp),
-                                str(args.threads)], args.threads),
-                "path": rc(args.rcache, "path")}
+        cmds = {} if args.no_mitsuba else {
+            "mitsuba": pin([args.python, "-c", MITSUBA, path, out + "_mi.exr", str(args.res), str(spp), str(args.threads)],
+                           args.threads)}
+        cmds["path"] = rc(args.rcache, "path")
         if args.rcache_ref:
             cmds["path_ref"] = rc(args.rcache_ref, "path")
         if args.final:
@@ -97,7 +101,7 @@ def main():
 
     names = list(commands(args.scenes[0], 1).keys())
     best = {}
-    for scene in args.scenes:
+    for scene in args.scenes if not args.no_mitsuba else []:
         for spp in args.spp:  # warm Dr.Jit's kernel cache (and the page cache) for every configuration
             timed(commands(scene, spp)["mitsuba"], env)
     for rep in range(args.reps):
@@ -110,16 +114,18 @@ def main():
     lo, hi = args.spp
     for clock in ("cpu", "wall"):
         print("\n%s time:\n" % clock)
-        print("| scene | " + " | ".join("%s ms/spp" % n for n in names) + " | path / mitsuba |" +
-              (" path_ref / path |" if args.rcache_ref else "") + (" final / mitsuba |" if args.final else ""))
-        print("|---" * (len(names) + 2 + bool(args.rcache_ref) + bool(args.final)) + "|")
+        peer = not args.no_mitsuba
+        print("| scene | " + " | ".join("%s ms/spp" % n for n in names) + " |" + (" path / mitsuba |" if peer else "") +
+              (" path_ref / path |" if args.rcache_ref else "") + (" final / mitsuba |" if args.final and peer else ""))
+        print("|---" * (len(names) + 1 + peer + bool(args.rcache_ref) + bool(args.final and peer)) + "|")
         for scene in args.scenes:
             slope = {n: 1000.0 * (best[(clock, scene, hi, n)] - best[(clock, scene, lo, n)]) / (hi - lo) for n in names}
-            row = "| %s | " % scene + " | ".join("%.2f" % slope[n] for n in names)
-            row += " | %.2f |" % (slope["path"] / slope["mitsuba"])
+            row = "| %s | " % scene + " | ".join("%.2f" % slope[n] for n in names) + " |"
+            if peer:
+                row += " %.2f |" % (slope["path"] / slope["mitsuba"])
             if args.rcache_ref:
-                row += " %.2f |" % (slope["path_ref"] / slope["path"])
-            if args.final:
+                row += " %.3f |" % (slope["path_ref"] / slope["path"])
+            if args.final and peer:
                 row += " %.2f |" % (slope["rcache_final"] / slope["mitsuba"])
             print(row, flush=True)
 

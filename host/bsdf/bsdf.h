@@ -33,6 +33,12 @@ enum BsdfLobe : uint32_t {
   kLobeTransmission = 1u << 3,
 };
 
+// eval() and pdf() of one pair of directions (Bsdf::evalPdf).
+struct BsdfValue {
+  Color f{0.0f};
+  float pdf = 0.0f;
+};
+
 struct BsdfSample {
   Vec3 wi;              // sampled incoming direction (local)
   Color weight{0.0f};   // f·|cos θi| / pdf (for a delta lobe: the full throughput factor)
@@ -49,6 +55,9 @@ class Bsdf {
   virtual Color eval(const Vec3& wo, const Vec3& wi) const = 0;
   // Solid-angle pdf with which sample() returns wi for the continuous lobes (0 for delta-only).
   virtual float pdf(const Vec3& wo, const Vec3& wi) const = 0;
+  // Both at once (Mitsuba's eval_pdf), bit for bit the values of eval() and pdf(): a BSDF whose two
+  // share work (a microfacet lobe's half vector, D and G1 of the viewer) overrides it to do it once.
+  virtual BsdfValue evalPdf(const Vec3& wo, const Vec3& wi) const { return BsdfValue{eval(wo, wi), pdf(wo, wi)}; }
   // Importance-samples wi; u1 picks a lobe, u2 the direction. Empty when no valid sample.
   virtual std::optional<BsdfSample> sample(const Vec3& wo, float u1, const Vec2& u2) const = 0;
 

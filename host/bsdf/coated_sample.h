@@ -22,9 +22,10 @@ inline std::optional<BsdfSample> sampleCoatOrBase(const Bsdf& bsdf, const Microf
     s.wi = squareToCosineHemisphere(u2);
     s.lobe = kLobeDiffuse;
   }
-  s.pdf = bsdf.pdf(wo, s.wi);
+  const BsdfValue value = bsdf.evalPdf(wo, s.wi);
+  s.pdf = value.pdf;
   if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return std::nullopt;
-  s.weight = bsdf.eval(wo, s.wi) / s.pdf;
+  s.weight = value.f / s.pdf;
   return s;
 }
 

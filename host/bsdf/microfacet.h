@@ -26,6 +26,16 @@ class Microfacet {
   float D(const Vec3& m) const;
   float smithG1(const Vec3& v, const Vec3& m) const;
   float G(const Vec3& wi, const Vec3& wo, const Vec3& m) const { return smithG1(wi, m) * smithG1(wo, m); }
+  // What a reflection's eval and pdf share: its half vector h = normalize(wo + wi), D(h) and the
+  // viewer's G1(wo, h) — G(wo, wi, h) is g1o · smithG1(wi, h), the visible-normal pdf D · g1o.
+  struct HalfTerms {
+    Vec3 h;
+    float d, g1o;
+  };
+  HalfTerms halfTerms(const Vec3& wo, const Vec3& wi) const {
+    const Vec3 h = glm::normalize(wo + wi);
+    return HalfTerms{h, D(h), smithG1(wo, h)};
+  }
   // Density of sample() over microfacet normals (solid angle of m).
   float pdf(const Vec3& wi, const Vec3& m) const;
   // Returns (m, pdf(m)); pdf 0 when sampling failed.

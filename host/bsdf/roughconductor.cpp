@@ -30,20 +30,18 @@ class RoughConductorBsdf final : public Bsdf, public AlphaFamily {
 
   Color eval(const Vec3& wo, const Vec3& wi) const override {
     if (!(wo.z > 0.0f && wi.z > 0.0f)) return Color(0.0f);
-    const Vec3 h = glm::normalize(wo + wi);
-    const float d = distr_.D(h);
-    if (d == 0.0f) return Color(0.0f);
-    const float g = distr_.G(wo, wi, h);
-    return fresnel_.eval(glm::dot(wo, h)) * (d * g / (4.0f * wo.z));
+    return eval(wo, wi, distr_.halfTerms(wo, wi));
   }
 
   float pdf(const Vec3& wo, const Vec3& wi) const override {
     if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
-    const Vec3 m = glm::normalize(wo + wi);
-    if (!(glm::dot(wo, m) > 0.0f && glm::dot(wi, m) > 0.0f)) return 0.0f;
-    // Jacobian of the reflection map dωm/dωi = 1/(4 |wi·m|).
-    if (distr_.sampleVisible()) return distr_.D(m) * distr_.smithG1(wo, m) / (4.0f * wo.z);
-    return distr_.pdf(wo, m) / (4.0f * glm::dot(wi, m));
+    return pdf(wo, wi, distr_.halfTerms(wo, wi));
+  }
+
+  BsdfValue evalPdf(const Vec3& wo, const Vec3& wi) const override {
+    if (!(wo.z > 0.0f && wi.z > 0.0f)) return BsdfValue{};
+    const Microfacet::HalfTerms m = distr_.halfTerms(wo, wi);
+    return BsdfValue{eval(wo, wi, m), pdf(wo, wi, m)};
   }
 
   std::optional<BsdfSample> sample(const Vec3& wo, float, const Vec2& u2) const override {
@@ -92,6 +90,19 @@ class RoughConductorBsdf final : public Bsdf, public AlphaFamily {
   }
 
  private:
+  // eval and pdf from the half vector's terms (wo.z > 0, wi.z > 0).
+  Color eval(const Vec3& wo, const Vec3& wi, const Microfacet::HalfTerms& m) const {
+    if (m.d == 0.0f) return Color(0.0f);
+    const float g = m.g1o * distr_.smithG1(wi, m.h);
+    return fresnel_.eval(glm::dot(wo, m.h)) * (m.d * g / (4.0f * wo.z));
+  }
+  float pdf(const Vec3& wo, const Vec3& wi, const Microfacet::HalfTerms& m) const {
+    if (!(glm::dot(wo, m.h) > 0.0f && glm::dot(wi, m.h) > 0.0f)) return 0.0f;
+    // Jacobian of the reflection map dωm/dωi = 1/(4 |wi·m|).
+    if (distr_.sampleVisible()) return m.d * m.g1o / (4.0f * wo.z);
+    return distr_.pdf(wo, m.h) / (4.0f * glm::dot(wi, m.h));
+  }
+
   Microfacet distr_;
   ConductorFresnel fresnel_;
   RoughnessTextures roughness_;

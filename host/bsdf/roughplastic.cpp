@@ -107,12 +107,11 @@ class RoughPlasticBsdf final : public Bsdf {
     return evalCoat(wo, wi) + evalBase(wo, wi);
   }
   // The two terms of eval, for wo.z > 0 and wi.z > 0.
-  Color evalCoat(const Vec3& wo, const Vec3& wi) const {
-    const Vec3 h = glm::normalize(wo + wi);
-    const float d = distr_.D(h);
-    const float f = fresnelDielectric(glm::dot(wo, h), eta_).r;
-    const float g = distr_.G(wo, wi, h);
-    return specular_ * (f * d * g / (4.0f * wo.z));
+  Color evalCoat(const Vec3& wo, const Vec3& wi) const { return evalCoat(wo, wi, distr_.halfTerms(wo, wi)); }
+  Color evalCoat(const Vec3& wo, const Vec3& wi, const Microfacet::HalfTerms& m) const {
+    const float f = fresnelDielectric(glm::dot(wo, m.h), eta_).r;
+    const float g = m.g1o * distr_.smithG1(wi, m.h);
+    return specular_ * (f * m.d * g / (4.0f * wo.z));
   }
   Color evalBase(const Vec3& wo, const Vec3& wi) const {
     const float to = externalTransmittance(wo.z), ti = externalTransmittance(wi.z);
@@ -121,14 +120,23 @@ class RoughPlasticBsdf final : public Bsdf {
 
   float pdf(const Vec3& wo, const Vec3& wi) const override {
     if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
+    return mixturePdf(wo, wi, pdfCoat(wo, wi));
+  }
+  BsdfValue evalPdf(const Vec3& wo, const Vec3& wi) const override {
+    if (!(wo.z > 0.0f && wi.z > 0.0f)) return BsdfValue{};
+    const Microfacet::HalfTerms m = distr_.halfTerms(wo, wi);
+    return BsdfValue{evalCoat(wo, wi, m) + evalBase(wo, wi), mixturePdf(wo, wi, pdfCoat(wo, wi, m))};
+  }
+  // The sampling mixture's density given the coat's (wo.z > 0, wi.z > 0).
+  float mixturePdf(const Vec3& wo, const Vec3& wi, float coatPdf) const {
     const float pSpec = probSpecular(wo.z), pDiff = 1.0f - pSpec;
-    return pSpec * pdfCoat(wo, wi) + pDiff * squareToCosineHemispherePdf(wi);
+    return pSpec * coatPdf + pDiff * squareToCosineHemispherePdf(wi);
   }
   // Density of the coat's microfacet sampling alone (wo.z > 0, wi.z > 0).
-  float pdfCoat(const Vec3& wo, const Vec3& wi) const {
-    const Vec3 h = glm::normalize(wo + wi);
-    if (distr_.sampleVisible()) return distr_.D(h) * distr_.smithG1(wo, h) / (4.0f * wo.z);
-    return distr_.pdf(wo, h) / (4.0f * glm::dot(wi, h));
+  float pdfCoat(const Vec3& wo, const Vec3& wi) const { return pdfCoat(wo, wi, distr_.halfTerms(wo, wi)); }
+  float pdfCoat(const Vec3& wo, const Vec3& wi, const Microfacet::HalfTerms& m) const {
+    if (distr_.sampleVisible()) return m.d * m.g1o / (4.0f * wo.z);
+    return distr_.pdf(wo, m.h) / (4.0f * glm::dot(wi, m.h));
   }
   Vec3 sampleCoat(const Vec3& wo, const Vec2& u2) const { return reflectAbout(wo, distr_.sample(wo, u2).first); }
 

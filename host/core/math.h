@@ -1,5 +1,6 @@
 #pragma once
 // Basic math types: GLM vectors in float for rendering; references use double explicitly.
+#include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
 
@@ -23,5 +24,7 @@ inline bool isFinite(const Color& c) { return std::isfinite(c.r) && std::isfinit
 // target GCC does not inline fmax, and the per-sample code calls it several times a vertex.
 inline float fmaxInline(float a, float b) { return (a > b || b != b) ? a : b; }
 inline float maxComponent(const Color& c) { return fmaxInline(c.r, fmaxInline(c.g, c.b)); }
+// The largest coordinate magnitude of a point (the scale of its float rounding error).
+inline float maxAbs(const Vec3& p) { return std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}); }
 
 }  // namespace rc

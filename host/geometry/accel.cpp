@@ -32,8 +32,6 @@ constexpr float kFloatEps = 5.96046448e-8f;  // 2^-24
 // relative to the magnitude of the coordinates involved, with a generous safety factor.
 constexpr float kPointErrorUlps = 32.0f;
 
-inline float maxAbs(const Vec3& p) { return std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}); }
-
 struct SphereData {
   const std::vector<Sphere>* spheres;
 };

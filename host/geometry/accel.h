@@ -83,4 +83,31 @@ class Accel {
   std::unique_ptr<Impl> impl_;
 };
 
+// The offset of a spawned ray's origin (geometry/offset_origin.cpp explains it). spawnRay is inline:
+// every path vertex calls it, and a Ray returned through memory stalls the loads that read it back.
+namespace offset {
+// 2^-16 · max|p| ≈ 256 float ulps: well above the few ulps of interpolation/intersection error,
+// well below any feature size that matters (1.5e-5 relative).
+constexpr float kRelativeOffset = 1.0f / 65536.0f;
+// Keeps the offset non-zero for p exactly at the origin of a tiny scene (smallest normal float ×2^20).
+constexpr float kAbsoluteFloor = 1e-32f;
+
+inline Vec3 offsetBy(const Vec3& p, const Vec3& ng, const Vec3& d, float magnitude) {
+  const float side = glm::dot(ng, d) >= 0.0f ? 1.0f : -1.0f;
+  return p + ng * (side * magnitude);
+}
+}  // namespace offset
+
+inline Vec3 Accel::offsetOrigin(const Hit& hit, const Vec3& d) {
+  return offset::offsetBy(hit.p, hit.ng, d,
+                          std::max({offset::kRelativeOffset * maxAbs(hit.p), 4.0f * hit.pError, offset::kAbsoluteFloor}));
+}
+
+inline Ray Accel::spawnRay(const Hit& hit, const Vec3& d) {
+  Ray r;
+  r.o = offsetOrigin(hit, d);
+  r.d = d;
+  return r;
+}
+
 }  // namespace rc

@@ -2,9 +2,8 @@
 
 namespace rc {
 
-Frame shadingFrame(const Bsdf& material, const Hit& hit, const Vec3& woWorld) {
+Frame perturbedShadingFrame(const Bsdf& material, const Hit& hit, const Vec3& woWorld) {
   const Frame base = hit.frame();
-  if (!material.perturbsFrame()) return base;
   FramePoint point;
   point.uv = hit.uv;
   point.ng = base.toLocal(hit.ng);

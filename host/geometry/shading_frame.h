@@ -7,8 +7,12 @@
 
 namespace rc {
 
-// `woWorld` points toward the viewer.
-Frame shadingFrame(const Bsdf& material, const Hit& hit, const Vec3& woWorld);
+// `woWorld` points toward the viewer. Inline for the common case (the hit's own frame): every path
+// vertex calls it, and a Frame returned through memory stalls the loads that read it back.
+Frame perturbedShadingFrame(const Bsdf& material, const Hit& hit, const Vec3& woWorld);
+inline Frame shadingFrame(const Bsdf& material, const Hit& hit, const Vec3& woWorld) {
+  return material.perturbsFrame() ? perturbedShadingFrame(material, hit, woWorld) : hit.frame();
+}
 
 // The BSDF at `hit` shaded in `frame` (shadingFrame, or its mirror to the viewer): bsdfAt(material,
 // hit.uv) for materials that keep the frame; for those that perturb it, the point BSDF with the

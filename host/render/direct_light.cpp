@@ -37,15 +37,17 @@ std::optional<UnshadowedLight> lightSampleUnshadowed(const RenderContext& ctx, c
   const std::optional<LightSample> ls = ctx.lights.sample(hit.p, u, uLight);
   if (!ls || !(ls->pdf > 0.0f || ls->delta)) return std::nullopt;
   const Vec3 wiLocal = frame.toLocal(ls->wi);
-  const Color f = bsdf.eval(woLocal, wiLocal);
-  if (maxComponent(f) <= 0.0f || maxComponent(ls->radiance) <= 0.0f) return std::nullopt;
+  // The BSDF's density only where MIS weighs the sample, then with its value in one call.
+  const bool weighted = misLightSamples != 0 && !ls->delta;
+  const BsdfValue f = weighted ? bsdf.evalPdf(woLocal, wiLocal) : BsdfValue{bsdf.eval(woLocal, wiLocal), 0.0f};
+  if (maxComponent(f.f) <= 0.0f || maxComponent(ls->radiance) <= 0.0f) return std::nullopt;
   UnshadowedLight out;
   out.shadow = shadowRay(hit, *ls);
-  if (misLightSamples == 0 || ls->delta) {
-    out.value = f * ls->radiance;
+  if (!weighted) {
+    out.value = f.f * ls->radiance;
   } else {
     const float n = static_cast<float>(misLightSamples);
-    out.value = f * ls->radiance * powerHeuristic(n * ls->pdf, bsdf.pdf(woLocal, wiLocal));
+    out.value = f.f * ls->radiance * powerHeuristic(n * ls->pdf, f.pdf);
   }
   return out;
 }

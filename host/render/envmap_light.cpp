@@ -69,8 +69,11 @@ Color EnvmapLight::bilinear(const Vec2& uv) const {
   const float fy = uv.y * (height_ - 1);  // texel y's centre at v = y / (H − 1)
   const float x0f = std::floor(fx);
   const float tx = fx - x0f;
-  int x0 = static_cast<int>(x0f) % width_;
+  // Wrapped into [0, W): for u ∈ [0, 1], x0 ∈ [−1, W − 1] and one +W wraps it without an integer
+  // division (a hot one); the remainder only for u outside [0, 1].
+  int x0 = static_cast<int>(x0f);
   if (x0 < 0) x0 += width_;
+  if (x0 < 0 || x0 >= width_) x0 = (x0 % width_ + width_) % width_;
   const int x1 = x0 + 1 < width_ ? x0 + 1 : 0;
   const int y0 = std::min(height_ - 2, std::max(0, static_cast<int>(std::floor(fy))));
   const float ty = glm::clamp(fy - y0, 0.0f, 1.0f);

@@ -1,7 +1,7 @@
 // Sampling routines against their own pdf(): a chi-square goodness-of-fit test per configuration
 // (cosθ × φ histogram of 100k samples vs pdf integrated over each bin, Šidák-corrected 1e-3 level
 // over all configurations, as Mitsuba's chi2 tests), plus sample()'s weight and pdf == eval/pdf and
-// pdf() for every continuous sample.
+// pdf() for every continuous sample, and evalPdf() == (eval(), pdf()) exactly.
 #include <gtest/gtest.h>
 
 #include "bsdf_test_util.h"
@@ -84,12 +84,15 @@ const SamplingCase kCases[] = {
 };
 constexpr int kNumCases = sizeof(kCases) / sizeof(kCases[0]);
 
-class BsdfSampling : public ::testing::TestWithParam<int> {};
-
-TEST_P(BsdfSampling, ChiSquare) {
+// Each test's case, its BSDF and its viewer direction.
+class BsdfSampling : public ::testing::TestWithParam<int> {
+ protected:
   const SamplingCase& c = kCases[GetParam()];
   const BsdfPtr bsdf = c.make();
   const Vec3 wo = dirFrom(c.cosThetaO, c.phiO);
+};
+
+TEST_P(BsdfSampling, ChiSquare) {
   const Chi2Result r = chi2ForBsdf(*bsdf, wo, 1000 + GetParam());
   // Šidák: every configuration at level α' so that the whole suite has false-alarm rate 1e-3.
   const double alpha = 1.0 - std::pow(1.0 - 1e-3, 1.0 / kNumCases);
@@ -99,9 +102,6 @@ TEST_P(BsdfSampling, ChiSquare) {
 }
 
 TEST_P(BsdfSampling, WeightIsEvalOverPdf) {
-  const SamplingCase& c = kCases[GetParam()];
-  const BsdfPtr bsdf = c.make();
-  const Vec3 wo = dirFrom(c.cosThetaO, c.phiO);
   Rng rng(77 + GetParam(), 3);
   int continuous = 0;
   for (int k = 0; k < 2000; ++k) {
@@ -121,6 +121,25 @@ TEST_P(BsdfSampling, WeightIsEvalOverPdf) {
     for (int ch = 0; ch < 3; ++ch) ASSERT_NEAR(s->weight[ch], f[ch] / pdf, 1e-3f * f[ch] / pdf + 1e-7f) << c.name;
   }
   EXPECT_GT(continuous, 0) << c.name;
+}
+
+// evalPdf (one call where eval and pdf share work) gives eval's and pdf's values bit for bit: for
+// sampled directions and for directions all over the sphere (below the surface, grazing).
+TEST_P(BsdfSampling, EvalPdfIsEvalAndPdfExactly) {
+  Rng rng(91 + GetParam(), 5);
+  int nonZero = 0;
+  for (int k = 0; k < 4000; ++k) {
+    Vec3 wi = uniformSphere(rng);
+    if (k % 2 == 0)
+      if (const auto s = bsdf->sample(wo, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()))) wi = s->wi;
+    const BsdfValue both = bsdf->evalPdf(wo, wi);
+    const Color f = bsdf->eval(wo, wi);
+    const float pdf = bsdf->pdf(wo, wi);
+    for (int ch = 0; ch < 3; ++ch) ASSERT_EQ(both.f[ch], f[ch]) << c.name << " wi " << wi.x << " " << wi.y << " " << wi.z;
+    ASSERT_EQ(both.pdf, pdf) << c.name << " wi " << wi.x << " " << wi.y << " " << wi.z;
+    if (pdf > 0.0f && maxComponent(f) > 0.0f) ++nonZero;
+  }
+  EXPECT_GT(nonZero, 100) << c.name;
 }
 
 INSTANTIATE_TEST_SUITE_P(All, BsdfSampling, ::testing::Range(0, kNumCases),
