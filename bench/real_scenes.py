@@ -44,7 +44,7 @@ CORPUS_GLOBS = ["docs/scenes/*.xml", "docs/scenes/principled_blend_creation/*.xm
 
 MITSUBA_SNIPPET = r"""
 import sys, mitsuba as mi
-mi.set_variant("scalar_rgb")
+mi.set_variant(sys.argv[4])
 scene = mi.load_file(sys.argv[1])
 img = mi.render(scene, spp=int(sys.argv[3]), seed=0)
 mi.Bitmap(img).write(sys.argv[2])
@@ -137,6 +137,7 @@ def main():
     ap.add_argument("--res", type=int, default=64)
     ap.add_argument("--spp", type=int, default=64, help="rcache path tracer spp (two seeds)")
     ap.add_argument("--spp-mitsuba", type=int, default=256)
+    ap.add_argument("--variant", default="scalar_rgb", help="Mitsuba variant of the reference")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--timeout", type=int, default=300)
     ap.add_argument("--no-mitsuba", action="store_true")
@@ -169,10 +170,10 @@ def main():
         if not args.no_mitsuba:
             # Whether Mitsuba renders it at all (4 spp), then a reference only where rcache renders too.
             ref = os.path.join(out, tag + "_mitsuba.exr")
-            rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, "4"], args.timeout)
+            rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, "4", args.variant], args.timeout)
             row["mitsuba"] = rc == 0 or first_error(text.strip().splitlines()[-1] if text.strip() else text)
             if row["mitsuba"] is True and row["load_path"] is True:
-                rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, str(args.spp_mitsuba)], args.timeout * 4)
+                rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, str(args.spp_mitsuba), args.variant], args.timeout * 4)
                 row["mitsuba"] = rc == 0 or first_error(text)
             if row["mitsuba"] is True and row["load_path"] is True:
                 # The file's own integrator where rcache takes it (a `direct` file must be compared as
