@@ -6,14 +6,18 @@ else changed; included files are copied the same way) and records
   load_path / load_rcache   rcache renders it in strict mode with --integrator path / rcache
                             (else the first error line: the first unsupported feature, file:line)
   lenient                   rcache --lenient renders it (and how many substitutions it listed)
-  mitsuba                   Mitsuba 3 (scalar_rgb) renders it
+  mitsuba                   Mitsuba 3 renders it (--variant, default llvm_ad_rgb: its scalar variants
+                            weight samples with a 31-step table of the reconstruction filter, which
+                            rcache and the JIT variants evaluate exactly; see bench/RESULTS.md, ninth
+                            session, for the per-pixel difference at edges)
 and, where both rcache's path tracer and Mitsuba render it, compares them (rcache with the file's own
 integrator where it takes it, e.g. `direct`, else --integrator path; compare_integrator says which):
-  mean_ratio                per-channel mean(rcache) / mean(Mitsuba)
+  mean_ratio                per-channel mean(rcache, --seeds seeds) / mean(Mitsuba)
   block_z                   the largest |rcache − Mitsuba| of a 16-px block mean in units of its noise
-                            (noise from two rcache seeds, pooled over the block's 4×4-px sub-blocks so
-                            the reconstruction filter's pixel correlation is inside the estimate, plus
-                            Mitsuba's own noise at its spp)
+                            (bench/agreement_stats.py: the seeds' scatter pooled over 4×4-px
+                            sub-blocks per channel, plus Mitsuba's own noise at its spp; the ratio is
+                            read as Student's t with the pool's effective degrees of freedom and
+                            reported as the normal deviate of the same tail probability)
   agree                     |mean_ratio − 1| < 1 % in every channel and block_z < 4
 One JSON line per scene, then a summary line.
 
@@ -36,6 +40,8 @@ import subprocess
 import sys
 
 import numpy as np
+
+from agreement_stats import compare
 
 # Scene files of the corpus (relative to --corpus). Fragments meant only for <include> are left out.
 CORPUS_GLOBS = ["docs/scenes/*.xml", "docs/scenes/principled_blend_creation/*.xml", "scenes/*.xml",
@@ -99,48 +105,20 @@ def load_exr(path):
     return np.array(mi.Bitmap(path), dtype=np.float64)[..., :3]
 
 
-def block_means(img, b):
-    h, w, c = img.shape
-    h2, w2 = h // b * b, w // b * b
-    return img[:h2, :w2].reshape(h2 // b, b, w2 // b, b, c).mean(axis=(1, 3))
-
-
-def compare(a, b, m, spp, spp_mitsuba):
-    mean_ratio = (a.mean(axis=(0, 1)) / np.maximum(m.mean(axis=(0, 1)), 1e-12)).tolist()
-    if a.shape[0] < 16 or a.shape[1] < 16:
-        return mean_ratio, None, None
-    a16, m16 = block_means(a, 16), block_means(m, 16)
-    # Noise of a 16-px block mean: the 16 sub-blocks (4×4 px) of each block give 16·3 estimates of
-    # the sub-block variance from the seed difference; a block mean averages 16 sub-blocks.
-    d4 = block_means(a, 4) - block_means(b, 4)
-    H, W = a16.shape[:2]
-    d4 = d4[:H * 4, :W * 4].reshape(H, 4, W, 4, 3)
-    var_sub = (d4 ** 2).mean(axis=(1, 3, 4)) / 2.0
-    var_blk = var_sub / 16.0 * (1.0 + spp / spp_mitsuba)
-    z = np.abs(a16 - m16) / np.sqrt(np.maximum(var_blk, 1e-20))[..., None]
-    # Blocks that are exactly equal and noiseless (black background) carry no information.
-    z[np.abs(a16 - m16) < 1e-7] = 0.0
-    # The whole image's mean in units of its noise, per channel (same sub-block estimate): tells a
-    # mean ratio beyond 1 % that is noise (dim or firefly-prone scenes) from a bias.
-    d4c = block_means(a, 4) - block_means(b, 4)
-    n_sub = d4c.shape[0] * d4c.shape[1]
-    var_mean = ((d4c ** 2).mean(axis=(0, 1)) / 2.0) / n_sub * (1.0 + spp / spp_mitsuba)
-    mean_z = (np.abs(a.mean(axis=(0, 1)) - m.mean(axis=(0, 1))) / np.sqrt(np.maximum(var_mean, 1e-30))).tolist()
-    return mean_ratio, float(z.max()), mean_z
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--rcache", default="build/rcache")
     ap.add_argument("--corpus", default="/tmp/corpus")
     ap.add_argument("--work", default="/tmp/rcache_real_scenes")
     ap.add_argument("--res", type=int, default=64)
-    ap.add_argument("--spp", type=int, default=64, help="rcache path tracer spp (two seeds)")
+    ap.add_argument("--spp", type=int, default=64, help="rcache path tracer spp per seed")
+    ap.add_argument("--seeds", type=int, default=4, help="rcache seeds (≥ 2; their scatter is the noise estimate)")
     ap.add_argument("--spp-mitsuba", type=int, default=256)
-    ap.add_argument("--variant", default="scalar_rgb", help="Mitsuba variant of the reference")
+    ap.add_argument("--variant", default="llvm_ad_rgb", help="Mitsuba variant of the reference")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--timeout", type=int, default=300)
     ap.add_argument("--no-mitsuba", action="store_true")
+    ap.add_argument("--resume", action="store_true", help="keep Mitsuba references already in --work")
     ap.add_argument("--only", nargs="*", help="substrings of scene paths to run")
     args = ap.parse_args()
     rcache = os.path.abspath(args.rcache)
@@ -170,9 +148,11 @@ def main():
         if not args.no_mitsuba:
             # Whether Mitsuba renders it at all (4 spp), then a reference only where rcache renders too.
             ref = os.path.join(out, tag + "_mitsuba.exr")
-            rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, "4", args.variant], args.timeout)
+            kept = args.resume and os.path.exists(ref)
+            rc, text = (0, "") if kept else run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, "4", args.variant],
+                                                args.timeout)
             row["mitsuba"] = rc == 0 or first_error(text.strip().splitlines()[-1] if text.strip() else text)
-            if row["mitsuba"] is True and row["load_path"] is True:
+            if row["mitsuba"] is True and row["load_path"] is True and not kept:
                 rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, str(args.spp_mitsuba), args.variant], args.timeout * 4)
                 row["mitsuba"] = rc == 0 or first_error(text)
             if row["mitsuba"] is True and row["load_path"] is True:
@@ -181,7 +161,7 @@ def main():
                 # else the path tracer.
                 imgs = []
                 own = True
-                for seed in (1, 2):
+                for seed in range(1, args.seeds + 1):
                     img = os.path.join(out, "%s_path_s%d.exr" % (tag, seed))
                     flags = ["--spp", str(args.spp), "--seed", str(seed), "-o", img]
                     rc, text = run(base + flags, args.timeout) if own else (1, "")
@@ -191,9 +171,9 @@ def main():
                     imgs.append(img if rc == 0 else None)
                 row["compare_integrator"] = "file's" if own else "path"
                 if all(imgs):
-                    a, b, m = load_exr(imgs[0]), load_exr(imgs[1]), load_exr(ref)
-                    if a.shape == m.shape:
-                        row["mean_ratio"], row["block_z"], row["mean_z"] = compare(a, b, m, args.spp, args.spp_mitsuba)
+                    seeds, m = [load_exr(i) for i in imgs], load_exr(ref)
+                    if seeds[0].shape == m.shape:
+                        row["mean_ratio"], row["block_z"], row["mean_z"] = compare(seeds, m, args.spp, args.spp_mitsuba)
                         row["agree"] = bool(all(abs(r - 1) < 0.01 for r in row["mean_ratio"]) and
                                             (row["block_z"] is None or row["block_z"] < 4))
                     else:
