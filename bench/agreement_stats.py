@@ -64,42 +64,54 @@ def normal_equivalent(t, nu):
     return -NormalDist().inv_cdf(0.5 * p)
 
 
-def block_z(seeds, m, spp, spp_mitsuba):
-    """Per 16-px block and channel: |mean of the K rcache seeds − Mitsuba| in units of its noise, as
-    the normal deviate of the same tail probability (module docstring). seeds: K ≥ 2 images of spp
-    samples each; m: Mitsuba's image of spp_mitsuba samples."""
-    seeds = np.stack(seeds)
-    K = seeds.shape[0]
-    a = seeds.mean(axis=0)
-    # Variance of the difference, in units of one seed's variance: rcache's mean of K seeds plus
-    # Mitsuba's own noise, that of one seed at spp_mitsuba instead of spp samples.
-    share = 1.0 / K + spp / spp_mitsuba
-    var_sub = np.stack([block_means(s, 4) for s in seeds]).var(axis=0, ddof=1)  # one seed's, K−1 dof
-    a16, m16 = block_means(a, 16), block_means(m, 16)
+def _sub_terms(images, scale):
+    """Per 4-px sub-block and channel: the variance of the images' mean (their scatter, ddof 1, over
+    their count, times scale) and its degrees of freedom."""
+    imgs = np.stack(images)
+    return np.stack([block_means(i, 4) for i in imgs]).var(axis=0, ddof=1) / imgs.shape[0] * scale, imgs.shape[0] - 1
+
+
+def _noise_terms(seeds, mseeds, spp, spp_mitsuba):
+    """The sub-block variance terms of the difference of the two means, each with its degrees of
+    freedom: rcache's and Mitsuba's scatter, or with one Mitsuba image rcache's scatter standing for
+    both (one term: the same data must not count its degrees of freedom twice)."""
+    if len(mseeds) >= 2:
+        return [_sub_terms(seeds, 1.0), _sub_terms(mseeds, 1.0)]
+    return [_sub_terms(seeds, 1.0 + len(seeds) * spp / spp_mitsuba)]
+
+
+def block_z(seeds, mseeds, spp, spp_mitsuba):
+    """Per 16-px block and channel: |mean of the rcache seeds − mean of the Mitsuba seeds| in units of
+    its noise, as the normal deviate of the same tail probability (module docstring). seeds: K ≥ 2
+    rcache images of spp samples each; mseeds: Mitsuba's images, spp_mitsuba samples in all. With
+    two or more Mitsuba seeds their own scatter is their noise (a firefly in the reference counts);
+    with one, Mitsuba's noise is taken as rcache's per-sample variance at Mitsuba's sample count."""
+    terms = _noise_terms(seeds, mseeds, spp, spp_mitsuba)
+    a16, m16 = block_means(np.mean(seeds, axis=0), 16), block_means(np.mean(mseeds, axis=0), 16)
     H, W = a16.shape[:2]
-    v = var_sub[:H * 4, :W * 4].reshape(H, 4, W, 4, -1)
-    sum_v = v.sum(axis=(1, 3))
-    nu = np.where(sum_v > 0, sum_v ** 2 / np.maximum((v ** 2).sum(axis=(1, 3)) / (K - 1), 1e-300), K - 1)
+    blk = [(v[:H * 4, :W * 4].reshape(H, 4, W, 4, -1), dof) for v, dof in terms]
+    var = sum(v.sum(axis=(1, 3)) for v, _ in blk) / 256.0                 # a block mean averages 16 sub-blocks
+    # Welch–Satterthwaite: ν = (Σ vᵢ)² / Σ vᵢ²/νᵢ over every sub-block term of both renderers.
+    spread = sum((v ** 2).sum(axis=(1, 3)) / dof for v, dof in blk) / 256.0 ** 2
+    nu = np.where(var > 0, var ** 2 / np.maximum(spread, 1e-300), 1.0)
     diff = np.abs(a16 - m16)
-    t = diff / np.sqrt(np.maximum(sum_v / 256.0 * share, 1e-20))
+    t = diff / np.sqrt(np.maximum(var, 1e-20))
     z = np.vectorize(normal_equivalent)(t, np.maximum(nu, 1e-3))
     # Blocks that are exactly equal and noiseless (black background) carry no information.
     z[diff < 1e-7] = 0.0
     return z
 
 
-def compare(seeds, m, spp, spp_mitsuba):
-    """Per-channel mean ratio (mean of the seeds / Mitsuba), the largest block z (block_z) and the
-    per-channel z of the whole image's mean."""
-    a = np.mean(seeds, axis=0)
+def compare(seeds, mseeds, spp, spp_mitsuba):
+    """Per-channel mean ratio (rcache / Mitsuba, each the mean of its seeds), the largest block z
+    (block_z) and the per-channel z of the whole image's mean."""
+    a, m = np.mean(seeds, axis=0), np.mean(mseeds, axis=0)
     mean_ratio = (a.mean(axis=(0, 1)) / np.maximum(m.mean(axis=(0, 1)), 1e-12)).tolist()
     if a.shape[0] < 16 or a.shape[1] < 16:
         return mean_ratio, None, None
     # The whole image's mean in units of its noise, per channel (the same sub-block variances; with
     # hundreds of sub-blocks a normal deviate): tells a mean ratio beyond 1 % that is noise from a bias.
-    K = len(seeds)
-    var_sub = np.stack([block_means(s, 4) for s in seeds]).var(axis=0, ddof=1)
-    n_sub = var_sub.shape[0] * var_sub.shape[1]
-    var_mean = var_sub.mean(axis=(0, 1)) / n_sub * (1.0 / K + spp / spp_mitsuba)
+    v = sum(v for v, _ in _noise_terms(seeds, mseeds, spp, spp_mitsuba))
+    var_mean = v.sum(axis=(0, 1)) / (v.shape[0] * v.shape[1]) ** 2
     mean_z = (np.abs(a.mean(axis=(0, 1)) - m.mean(axis=(0, 1))) / np.sqrt(np.maximum(var_mean, 1e-30))).tolist()
-    return mean_ratio, float(block_z(seeds, m, spp, spp_mitsuba).max()), mean_z
+    return mean_ratio, float(block_z(seeds, mseeds, spp, spp_mitsuba).max()), mean_z

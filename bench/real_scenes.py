@@ -14,8 +14,8 @@ and, where both rcache's path tracer and Mitsuba render it, compares them (rcach
 integrator where it takes it, e.g. `direct`, else --integrator path; compare_integrator says which):
   mean_ratio                per-channel mean(rcache, --seeds seeds) / mean(Mitsuba)
   block_z                   the largest |rcache − Mitsuba| of a 16-px block mean in units of its noise
-                            (bench/agreement_stats.py: the seeds' scatter pooled over 4×4-px
-                            sub-blocks per channel, plus Mitsuba's own noise at its spp; the ratio is
+                            (bench/agreement_stats.py: each renderer's seed scatter, pooled over
+                            4×4-px sub-blocks per channel; the ratio is
                             read as Student's t with the pool's effective degrees of freedom and
                             reported as the normal deviate of the same tail probability)
   null_block_z              block_z of the last seed against the others: a check of the noise estimate
@@ -29,7 +29,8 @@ into one folder (default /tmp/corpus, layout as in those repositories, tutorials
 Scenes that need mitsuba-data's Git-LFS assets missing from the snapshot fail in both renderers.
 
   DRJIT_LIBLLVM_PATH=... /root/.cache/rcache/bench-venv/bin/python bench/real_scenes.py \
-      --rcache build/rcache --corpus /tmp/corpus --res 64 --spp 64 --spp-mitsuba 256
+      --rcache build/rcache --corpus /tmp/corpus --res 64 --spp 64 --spp-mitsuba 256 \\
+      [--seeds 4 --seeds-mitsuba 4 --variant llvm_ad_rgb (the defaults)] [--resume] [--only NAME...]
 """
 import argparse
 import glob
@@ -53,8 +54,8 @@ MITSUBA_SNIPPET = r"""
 import sys, mitsuba as mi
 mi.set_variant(sys.argv[4])
 scene = mi.load_file(sys.argv[1])
-img = mi.render(scene, spp=int(sys.argv[3]), seed=0)
-mi.Bitmap(img).write(sys.argv[2])
+for seed in range(int(sys.argv[5])):
+    mi.Bitmap(mi.render(scene, spp=int(sys.argv[3]), seed=seed)).write(sys.argv[2] % seed)
 """
 
 
@@ -115,6 +116,8 @@ def main():
     ap.add_argument("--spp", type=int, default=64, help="rcache path tracer spp per seed")
     ap.add_argument("--seeds", type=int, default=4, help="rcache seeds (≥ 2; their scatter is the noise estimate)")
     ap.add_argument("--spp-mitsuba", type=int, default=256)
+    ap.add_argument("--seeds-mitsuba", type=int, default=4,
+                    help="Mitsuba seeds sharing --spp-mitsuba (≥ 2: their scatter is Mitsuba's noise)")
     ap.add_argument("--variant", default="llvm_ad_rgb", help="Mitsuba variant of the reference")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--timeout", type=int, default=300)
@@ -148,13 +151,15 @@ def main():
         row["lenient"] = rc == 0 or first_error(text)
         if not args.no_mitsuba:
             # Whether Mitsuba renders it at all (4 spp), then a reference only where rcache renders too.
-            ref = os.path.join(out, tag + "_mitsuba.exr")
-            kept = args.resume and os.path.exists(ref)
-            rc, text = (0, "") if kept else run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, "4", args.variant],
+            ref = os.path.join(out, tag + "_mitsuba_s%d.exr")
+            refs = [ref % k for k in range(args.seeds_mitsuba)]
+            kept = args.resume and all(os.path.exists(r) for r in refs)
+            rc, text = (0, "") if kept else run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, "4", args.variant, "1"],
                                                 args.timeout)
             row["mitsuba"] = rc == 0 or first_error(text.strip().splitlines()[-1] if text.strip() else text)
             if row["mitsuba"] is True and row["load_path"] is True and not kept:
-                rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, str(args.spp_mitsuba), args.variant], args.timeout * 4)
+                rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, str(args.spp_mitsuba // args.seeds_mitsuba),
+                                args.variant, str(args.seeds_mitsuba)], args.timeout * 4)
                 row["mitsuba"] = rc == 0 or first_error(text)
             if row["mitsuba"] is True and row["load_path"] is True:
                 # The file's own integrator where rcache takes it (a `direct` file must be compared as
@@ -172,17 +177,17 @@ def main():
                     imgs.append(img if rc == 0 else None)
                 row["compare_integrator"] = "file's" if own else "path"
                 if all(imgs):
-                    seeds, m = [load_exr(i) for i in imgs], load_exr(ref)
-                    if seeds[0].shape == m.shape:
-                        row["mean_ratio"], row["block_z"], row["mean_z"] = compare(seeds, m, args.spp, args.spp_mitsuba)
+                    seeds, mseeds = [load_exr(i) for i in imgs], [load_exr(r) for r in refs]
+                    if seeds[0].shape == mseeds[0].shape:
+                        row["mean_ratio"], row["block_z"], row["mean_z"] = compare(seeds, mseeds, args.spp, args.spp_mitsuba)
                         # The same statistic between rcache's own seeds (the last one as the reference):
                         # agreement by construction, so beyond 4 only as often as a normal 4σ.
-                        row["null_block_z"] = compare(seeds[:-1], seeds[-1], args.spp, args.spp)[1] if len(seeds) > 2 else None
+                        row["null_block_z"] = compare(seeds[:-1], seeds[-1:], args.spp, args.spp)[1] if len(seeds) > 2 else None
                         row["agree"] = bool(all(abs(r - 1) < 0.01 for r in row["mean_ratio"]) and
                                             (row["block_z"] is None or row["block_z"] < 4))
                     else:
                         row["agree"] = False
-                        row["shape_mismatch"] = [list(a.shape), list(m.shape)]
+                        row["shape_mismatch"] = [list(seeds[0].shape), list(mseeds[0].shape)]
         print(json.dumps(row), flush=True)
         totals["scenes"] += 1
         for k in ("load_path", "load_rcache", "lenient", "mitsuba"):

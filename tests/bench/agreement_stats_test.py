@@ -43,13 +43,18 @@ truth = 1.0
 m = truth + mask * rng.normal(0, 0.5, shape)  # 4× the samples: half the σ
 for K in (2, 4):
     seeds = [truth + mask * rng.normal(0, 1, shape) for _ in range(K)]
-    z = st.block_z(seeds, m, 64, 256)
+    z = st.block_z(seeds, [m], 64, 256)
     beyond = int((z > 4).sum())
     # A normal variable is beyond 4σ with probability 6.3e-5 (≈0.1 of 1800); the ratio to the pooled
     # σ without the t correction (ν_eff ≈ 2(K−1)) is beyond 4 5.7 % (K = 2) or 0.7 % (K = 4) of the time.
     check("K=%d: agreeing blocks beyond 4: %d of %d" % (K, beyond, z.size), beyond <= 3)
+# A reference noisier per sample than rcache (e.g. fireflies rcache's sampling avoids): its own seeds'
+# scatter measures it (the single-image reading would assume rcache's variance for it).
+mseeds = [truth + mask * rng.normal(0, 3, shape) for _ in range(4)]  # 4 seeds × 64 spp, σ 3× rcache's
+z = st.block_z(seeds, mseeds, 64, 256)
+check("Mitsuba seeds: agreeing blocks beyond 4: %d of %d" % (int((z > 4).sum()), z.size), int((z > 4).sum()) <= 3)
 # A real difference stays visible with 4 seeds (ν_eff ≈ 6): a shift of 0.3 against a block σ of
 # √(2·(1/16)/256 · (1/4 + 1/4)) = 0.016 (t ≈ 19).
-moved = st.block_z([s + 0.3 for s in seeds], m, 64, 256)
+moved = st.block_z([s + 0.3 for s in seeds], [m], 64, 256)
 check("a shifted image is found", float(np.median(moved)) > 4, "median z %.1f" % float(np.median(moved)))
 sys.exit(1 if failures else 0)
