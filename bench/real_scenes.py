@@ -11,7 +11,8 @@ else changed; included files are copied the same way) and records
                             rcache and the JIT variants evaluate exactly; see bench/RESULTS.md, ninth
                             session, for the per-pixel difference at edges)
 and, where both rcache's path tracer and Mitsuba render it, compares them (rcache with the file's own
-integrator where it takes it, e.g. `direct`, else --integrator path; compare_integrator says which):
+integrator where it takes it, e.g. `direct`, else --integrator path — also for a file's path tracer,
+which rcache's default `auto` would render with its radiance cache; compare_integrator says which):
   mean_ratio                per-channel mean(rcache, --seeds seeds) / mean(Mitsuba)
   block_z                   the largest |rcache − Mitsuba| of a 16-px block mean in units of its noise
                             (bench/agreement_stats.py: each renderer's seed scatter, pooled over
@@ -163,19 +164,24 @@ def main():
                 row["mitsuba"] = rc == 0 or first_error(text)
             if row["mitsuba"] is True and row["load_path"] is True:
                 # The file's own integrator where rcache takes it (a `direct` file must be compared as
-                # direct illumination, not as the path tracer --integrator path would make of it),
-                # else the path tracer.
+                # direct illumination, not as the path tracer --integrator path would make of it), else
+                # the path tracer — also where the file asks for a path tracer, which rcache's `auto`
+                # would turn into its radiance cache (an approximation, not the estimator Mitsuba runs).
+                probe_stats = os.path.join(out, tag + "_auto_stats.json")
+                rc, text = run(base + ["--spp", "1", "-o", os.path.join(out, tag + "_auto_1.exr"), "--stats", probe_stats],
+                               args.timeout)
+                chosen = "path"
+                if rc == 0:
+                    with open(probe_stats) as f:
+                        auto = json.load(f).get("integrator", "rcache")
+                    chosen = "path" if auto == "rcache" else auto
                 imgs = []
-                own = True
                 for seed in range(1, args.seeds + 1):
                     img = os.path.join(out, "%s_path_s%d.exr" % (tag, seed))
                     flags = ["--spp", str(args.spp), "--seed", str(seed), "-o", img]
-                    rc, text = run(base + flags, args.timeout) if own else (1, "")
-                    if rc != 0:
-                        own = False
-                        rc, text = run(base + ["--integrator", "path"] + flags, args.timeout)
+                    rc, text = run(base + (["--integrator", "path"] if chosen == "path" else []) + flags, args.timeout)
                     imgs.append(img if rc == 0 else None)
-                row["compare_integrator"] = "file's" if own else "path"
+                row["compare_integrator"] = chosen
                 if all(imgs):
                     seeds, mseeds = [load_exr(i) for i in imgs], [load_exr(r) for r in refs]
                     if seeds[0].shape == mseeds[0].shape:
