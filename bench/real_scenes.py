@@ -170,18 +170,20 @@ def main():
                 probe_stats = os.path.join(out, tag + "_auto_stats.json")
                 rc, text = run(base + ["--spp", "1", "-o", os.path.join(out, tag + "_auto_1.exr"), "--stats", probe_stats],
                                args.timeout)
-                chosen = "path"
+                # (The statistics name the estimator: a `direct` file runs as "path" with its own
+                # parameters, which --integrator path would drop.)
+                auto = None
                 if rc == 0:
                     with open(probe_stats) as f:
-                        auto = json.load(f).get("integrator", "rcache")
-                    chosen = "path" if auto == "rcache" else auto
+                        auto = json.load(f).get("integrator")
+                forced = auto is None or auto == "rcache"
                 imgs = []
                 for seed in range(1, args.seeds + 1):
                     img = os.path.join(out, "%s_path_s%d.exr" % (tag, seed))
                     flags = ["--spp", str(args.spp), "--seed", str(seed), "-o", img]
-                    rc, text = run(base + (["--integrator", "path"] if chosen == "path" else []) + flags, args.timeout)
+                    rc, text = run(base + (["--integrator", "path"] if forced else []) + flags, args.timeout)
                     imgs.append(img if rc == 0 else None)
-                row["compare_integrator"] = chosen
+                row["compare_integrator"] = "path" if forced else "file's (%s)" % auto
                 if all(imgs):
                     seeds, mseeds = [load_exr(i) for i in imgs], [load_exr(r) for r in refs]
                     if seeds[0].shape == mseeds[0].shape:
