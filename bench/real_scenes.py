@@ -16,9 +16,9 @@ which rcache's default `auto` would render with its radiance cache; compare_inte
   mean_ratio                per-channel mean(rcache, --seeds seeds) / mean(Mitsuba)
   block_z                   the largest |rcache − Mitsuba| of a 16-px block mean in units of its noise
                             (bench/agreement_stats.py: each renderer's seed scatter, pooled over
-                            4×4-px sub-blocks per channel; the ratio is
-                            read as Student's t with the pool's effective degrees of freedom and
-                            reported as the normal deviate of the same tail probability)
+                            4×4-px sub-blocks per channel; the ratio is read as Student's t with the
+                            pool's effective degrees of freedom and reported as the normal deviate
+                            of the same tail probability)
   null_block_z              block_z of the last seed against the others: a check of the noise estimate
   agree                     |mean_ratio − 1| < 1 % in every channel and block_z < 4
 One JSON line per scene, then a summary line.
