@@ -6,16 +6,21 @@ else changed; included files are copied the same way) and records
   load_path / load_rcache   rcache renders it in strict mode with --integrator path / rcache
                             (else the first error line: the first unsupported feature, file:line)
   lenient                   rcache --lenient renders it (and how many substitutions it listed)
-  mitsuba                   Mitsuba 3 (scalar_rgb) renders it
+  mitsuba                   Mitsuba 3 renders it (--variant, default llvm_ad_rgb: its scalar variants
+                            weight samples with a 31-step table of the reconstruction filter, which
+                            rcache and the JIT variants evaluate exactly; see bench/RESULTS.md, ninth
+                            session, for the per-pixel difference at edges)
 and, where both rcache's path tracer and Mitsuba render it, compares them (rcache with the file's own
-integrator where it takes it, e.g. `direct`, else --integrator path; compare_integrator says which;
---compare-integrator NAME compares that one instead — a file asking for `path` is rendered by rcache
-under `--integrator auto`, so `--compare-integrator path` is what checks the path tracer there):
-  mean_ratio                per-channel mean(rcache) / mean(Mitsuba)
+integrator where it takes it, e.g. `direct`, else --integrator path — also for a file's path tracer,
+which rcache's default `auto` would render with its radiance cache; compare_integrator says which;
+--compare-integrator NAME compares that integrator instead, e.g. rcache against Mitsuba's path tracer):
+  mean_ratio                per-channel mean(rcache, --seeds seeds) / mean(Mitsuba)
   block_z                   the largest |rcache − Mitsuba| of a 16-px block mean in units of its noise
-                            (noise from two rcache seeds, pooled over the block's 4×4-px sub-blocks so
-                            the reconstruction filter's pixel correlation is inside the estimate, plus
-                            Mitsuba's own noise at its spp)
+                            (bench/agreement_stats.py: each renderer's seed scatter, pooled over
+                            4×4-px sub-blocks per channel; the ratio is read as Student's t with the
+                            pool's effective degrees of freedom and reported as the normal deviate
+                            of the same tail probability)
+  null_block_z              block_z of the last seed against the others: a check of the noise estimate
   agree                     |mean_ratio − 1| < 1 % in every channel and block_z < 4
 One JSON line per scene, then a summary line.
 
@@ -26,7 +31,8 @@ into one folder (default /tmp/corpus, layout as in those repositories, tutorials
 Scenes that need mitsuba-data's Git-LFS assets missing from the snapshot fail in both renderers.
 
   DRJIT_LIBLLVM_PATH=... /root/.cache/rcache/bench-venv/bin/python bench/real_scenes.py \
-      --rcache build/rcache --corpus /tmp/corpus --res 64 --spp 64 --spp-mitsuba 256
+      --rcache build/rcache --corpus /tmp/corpus --res 64 --spp 64 --spp-mitsuba 256 \\
+      [--seeds 4 --seeds-mitsuba 4 --variant llvm_ad_rgb (the defaults)] [--resume] [--only NAME...]
 """
 import argparse
 import glob
@@ -39,6 +45,8 @@ import sys
 
 import numpy as np
 
+from agreement_stats import compare
+
 # Scene files of the corpus (relative to --corpus). Fragments meant only for <include> are left out.
 CORPUS_GLOBS = ["docs/scenes/*.xml", "docs/scenes/principled_blend_creation/*.xml", "scenes/*.xml",
                 "scenes/cbox/*.xml", "scenes/matpreview/*.xml", "tutorials/scenes/*.xml",
@@ -46,10 +54,10 @@ CORPUS_GLOBS = ["docs/scenes/*.xml", "docs/scenes/principled_blend_creation/*.xm
 
 MITSUBA_SNIPPET = r"""
 import sys, mitsuba as mi
-mi.set_variant("scalar_rgb")
+mi.set_variant(sys.argv[4])
 scene = mi.load_file(sys.argv[1])
-img = mi.render(scene, spp=int(sys.argv[3]), seed=0)
-mi.Bitmap(img).write(sys.argv[2])
+for seed in range(int(sys.argv[5])):
+    mi.Bitmap(mi.render(scene, spp=int(sys.argv[3]), seed=seed)).write(sys.argv[2] % seed)
 """
 
 
@@ -101,47 +109,22 @@ def load_exr(path):
     return np.array(mi.Bitmap(path), dtype=np.float64)[..., :3]
 
 
-def block_means(img, b):
-    h, w, c = img.shape
-    h2, w2 = h // b * b, w // b * b
-    return img[:h2, :w2].reshape(h2 // b, b, w2 // b, b, c).mean(axis=(1, 3))
-
-
-def compare(a, b, m, spp, spp_mitsuba):
-    mean_ratio = (a.mean(axis=(0, 1)) / np.maximum(m.mean(axis=(0, 1)), 1e-12)).tolist()
-    if a.shape[0] < 16 or a.shape[1] < 16:
-        return mean_ratio, None, None
-    a16, m16 = block_means(a, 16), block_means(m, 16)
-    # Noise of a 16-px block mean: the 16 sub-blocks (4×4 px) of each block give 16·3 estimates of
-    # the sub-block variance from the seed difference; a block mean averages 16 sub-blocks.
-    d4 = block_means(a, 4) - block_means(b, 4)
-    H, W = a16.shape[:2]
-    d4 = d4[:H * 4, :W * 4].reshape(H, 4, W, 4, 3)
-    var_sub = (d4 ** 2).mean(axis=(1, 3, 4)) / 2.0
-    var_blk = var_sub / 16.0 * (1.0 + spp / spp_mitsuba)
-    z = np.abs(a16 - m16) / np.sqrt(np.maximum(var_blk, 1e-20))[..., None]
-    # Blocks that are exactly equal and noiseless (black background) carry no information.
-    z[np.abs(a16 - m16) < 1e-7] = 0.0
-    # The whole image's mean in units of its noise, per channel (same sub-block estimate): tells a
-    # mean ratio beyond 1 % that is noise (dim or firefly-prone scenes) from a bias.
-    d4c = block_means(a, 4) - block_means(b, 4)
-    n_sub = d4c.shape[0] * d4c.shape[1]
-    var_mean = ((d4c ** 2).mean(axis=(0, 1)) / 2.0) / n_sub * (1.0 + spp / spp_mitsuba)
-    mean_z = (np.abs(a.mean(axis=(0, 1)) - m.mean(axis=(0, 1))) / np.sqrt(np.maximum(var_mean, 1e-30))).tolist()
-    return mean_ratio, float(z.max()), mean_z
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--rcache", default="build/rcache")
     ap.add_argument("--corpus", default="/tmp/corpus")
     ap.add_argument("--work", default="/tmp/rcache_real_scenes")
     ap.add_argument("--res", type=int, default=64)
-    ap.add_argument("--spp", type=int, default=64, help="rcache path tracer spp (two seeds)")
+    ap.add_argument("--spp", type=int, default=64, help="rcache path tracer spp per seed")
+    ap.add_argument("--seeds", type=int, default=4, help="rcache seeds (≥ 2; their scatter is the noise estimate)")
     ap.add_argument("--spp-mitsuba", type=int, default=256)
+    ap.add_argument("--seeds-mitsuba", type=int, default=4,
+                    help="Mitsuba seeds sharing --spp-mitsuba (≥ 2: their scatter is Mitsuba's noise)")
+    ap.add_argument("--variant", default="llvm_ad_rgb", help="Mitsuba variant of the reference")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--timeout", type=int, default=300)
     ap.add_argument("--no-mitsuba", action="store_true")
+    ap.add_argument("--resume", action="store_true", help="keep Mitsuba references already in --work")
     ap.add_argument("--only", nargs="*", help="substrings of scene paths to run")
     ap.add_argument("--compare-integrator", help="compare this integrator (e.g. path, rcache) instead of the file's")
     args = ap.parse_args()
@@ -171,36 +154,54 @@ def main():
         row["lenient"] = rc == 0 or first_error(text)
         if not args.no_mitsuba:
             # Whether Mitsuba renders it at all (4 spp), then a reference only where rcache renders too.
-            ref = os.path.join(out, tag + "_mitsuba.exr")
-            rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, "4"], args.timeout)
+            ref = os.path.join(out, tag + "_mitsuba_s%d.exr")
+            refs = [ref % k for k in range(args.seeds_mitsuba)]
+            kept = args.resume and all(os.path.exists(r) for r in refs)
+            rc, text = (0, "") if kept else run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, "4", args.variant, "1"],
+                                                args.timeout)
             row["mitsuba"] = rc == 0 or first_error(text.strip().splitlines()[-1] if text.strip() else text)
-            if row["mitsuba"] is True and row["load_path"] is True:
-                rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, str(args.spp_mitsuba)], args.timeout * 4)
+            if row["mitsuba"] is True and row["load_path"] is True and not kept:
+                rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, str(args.spp_mitsuba // args.seeds_mitsuba),
+                                args.variant, str(args.seeds_mitsuba)], args.timeout * 4)
                 row["mitsuba"] = rc == 0 or first_error(text)
             if row["mitsuba"] is True and row["load_path"] is True:
                 # The file's own integrator where rcache takes it (a `direct` file must be compared as
-                # direct illumination, not as the path tracer --integrator path would make of it),
-                # else the path tracer.
+                # direct illumination, not as the path tracer --integrator path would make of it), else
+                # the path tracer — also where the file asks for a path tracer, which rcache's `auto`
+                # would turn into its radiance cache (an approximation, not the estimator Mitsuba runs).
+                probe_stats = os.path.join(out, tag + "_auto_stats.json")
+                rc, text = run(base + ["--spp", "1", "-o", os.path.join(out, tag + "_auto_1.exr"), "--stats", probe_stats],
+                               args.timeout)
+                # (The statistics name the estimator: a `direct` file runs as "path" with its own
+                # parameters, which --integrator path would drop.)
+                auto = None
+                if rc == 0:
+                    with open(probe_stats) as f:
+                        auto = json.load(f).get("integrator")
+                forced = auto is None or auto == "rcache"
                 imgs = []
-                own = args.compare_integrator is None
-                for seed in (1, 2):
+                if args.compare_integrator:
+                    forced, chosen = True, args.compare_integrator
+                else:
+                    chosen = "path" if forced else None
+                for seed in range(1, args.seeds + 1):
                     img = os.path.join(out, "%s_path_s%d.exr" % (tag, seed))
                     flags = ["--spp", str(args.spp), "--seed", str(seed), "-o", img]
-                    rc, text = run(base + flags, args.timeout) if own else (1, "")
-                    if rc != 0:
-                        own = False
-                        rc, text = run(base + ["--integrator", args.compare_integrator or "path"] + flags, args.timeout)
+                    rc, text = run(base + (["--integrator", chosen] if forced else []) + flags, args.timeout)
                     imgs.append(img if rc == 0 else None)
-                row["compare_integrator"] = "file's" if own else args.compare_integrator or "path"
+                row["compare_integrator"] = chosen if forced else "file's (%s)" % auto
                 if all(imgs):
-                    a, b, m = load_exr(imgs[0]), load_exr(imgs[1]), load_exr(ref)
-                    if a.shape == m.shape:
-                        row["mean_ratio"], row["block_z"], row["mean_z"] = compare(a, b, m, args.spp, args.spp_mitsuba)
+                    seeds, mseeds = [load_exr(i) for i in imgs], [load_exr(r) for r in refs]
+                    if seeds[0].shape == mseeds[0].shape:
+                        row["mean_ratio"], row["block_z"], row["mean_z"] = compare(seeds, mseeds, args.spp, args.spp_mitsuba)
+                        # The same statistic between rcache's own seeds (the last one as the reference):
+                        # agreement by construction, so beyond 4 only as often as a normal 4σ.
+                        row["null_block_z"] = compare(seeds[:-1], seeds[-1:], args.spp, args.spp)[1] if len(seeds) > 2 else None
                         row["agree"] = bool(all(abs(r - 1) < 0.01 for r in row["mean_ratio"]) and
                                             (row["block_z"] is None or row["block_z"] < 4))
                     else:
                         row["agree"] = False
-                        row["shape_mismatch"] = [list(a.shape), list(m.shape)]
+                        row["shape_mismatch"] = [list(seeds[0].shape), list(mseeds[0].shape)]
         print(json.dumps(row), flush=True)
         totals["scenes"] += 1
         for k in ("load_path", "load_rcache", "lenient", "mitsuba"):

@@ -25,3 +25,6 @@ set_tests_properties(cli_progressive PROPERTIES LABELS cli TIMEOUT 180)
 # rcache images and cache files identical for 1, 2 and 3 threads (issue 16: the cache's parallel steps).
 add_test(NAME cli_thread_determinism COMMAND ${CMAKE_SOURCE_DIR}/tests/cli/thread_determinism_tests.sh $<TARGET_FILE:rcache>)
 set_tests_properties(cli_thread_determinism PROPERTIES LABELS cli TIMEOUT 300)
+# bench/agreement_stats.py (the corpus comparison's noise estimate): t tails, calibration, power.
+add_test(NAME bench_agreement_stats COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/bench/agreement_stats_test.py)
+set_tests_properties(bench_agreement_stats PROPERTIES LABELS bench TIMEOUT 60)

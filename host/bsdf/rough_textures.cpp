@@ -12,7 +12,7 @@ TexturePtr textureOf(const BsdfTextures& textures, const std::string& name) {
   return it == textures.end() ? nullptr : it->second;
 }
 
-float textureValue1(const Texture& texture, const TexturePoint& uv) { return luminance(texture.eval(uv)); }
+float textureValue1(const Texture& texture, const TexturePoint& uv) { return texture.eval1(uv); }
 
 std::string textureFingerprint(const Texture& texture) {
   constexpr int kLattice = 17;

@@ -1,6 +1,6 @@
 #pragma once
 // Textured BSDF parameters evaluated per point (Bsdf::at): the scalar value of a texture (Mitsuba's
-// eval_1: the luminance of an RGB texture), a content fingerprint for parameterKey(), and the
+// eval_1, Texture::eval1), a content fingerprint for parameterKey(), and the
 // textures of a microfacet roughness (alpha, or alpha_u / alpha_v).
 #include <string>
 #include <utility>
@@ -12,7 +12,7 @@ namespace rc {
 
 // The texture on `name`, null when the parameter is not textured.
 TexturePtr textureOf(const BsdfTextures& textures, const std::string& name);
-// Mitsuba's Texture::eval_1 in RGB mode: the luminance of the texture's colour.
+// Mitsuba's Texture::eval_1 in RGB mode (Texture::eval1).
 float textureValue1(const Texture& texture, const TexturePoint& uv);
 // Text that changes whenever the texture's values do (its mean in hex floats and a hash of its values on a
 // fixed 17×17 uv lattice), so keys of different textures differ.

@@ -151,19 +151,19 @@ BsdfPtr Loader::buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_
   return bsdf;
 }
 
-BsdfPtr Loader::defaultBsdf() {
-  if (!defaultBsdf_) {
-    // A shape without a material is diffuse with reflectance 0.5, as in Mitsuba 3.
+BsdfPtr Loader::defaultBsdf(bool emitterShape) {
+  BsdfPtr& bsdf = defaultBsdf_[emitterShape ? 1 : 0];
+  if (!bsdf) {
     Properties props;
     props.pluginType = "diffuse";
     props.location = "(default material)";
     Property reflectance;
     reflectance.type = Property::Type::Rgb;
-    reflectance.vec = Color(0.5f);
+    reflectance.vec = Color(emitterShape ? 0.0f : 0.5f);
     props.set("reflectance", reflectance);
-    defaultBsdf_ = createBsdf(props, {}, "default-diffuse");
+    bsdf = createBsdf(props, {}, emitterShape ? "default-emitter-black" : "default-diffuse");
   }
-  return defaultBsdf_;
+  return bsdf;
 }
 
 // Mitsuba evaluates a mesh_attribute through the shape it shades: a shape without the attribute

@@ -49,7 +49,9 @@ class Loader {
   const Named& resolveRef(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref);
 
   BsdfPtr buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
-  BsdfPtr defaultBsdf();
+  // Mitsuba 3's material for a shape without one: diffuse with reflectance 0.5, or 0 on the shape of
+  // an area emitter (src/render/shape.cpp), so an emitter does not also reflect.
+  BsdfPtr defaultBsdf(bool emitterShape = false);
   TexturePtr buildTexture(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
   int bsdfIndex(const BsdfPtr& bsdf);  // index into scene_.bsdfs, adding it on first use
   void buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
@@ -91,7 +93,7 @@ class Loader {
   std::map<std::string, std::pair<std::shared_ptr<XmlFile>, pugi::xml_node>> areaEmitters_;
   std::set<const void*> substitutedNodes_;     // top-level elements already substituted
   std::map<const Bsdf*, int> bsdfIndices_;
-  BsdfPtr defaultBsdf_;
+  BsdfPtr defaultBsdf_[2];  // [emitterShape]
   // Per built BSDF: its nesting depth and how many BSDFs one evaluation visits, counting a BSDF
   // that <ref>s reach twice twice (bsdf_builder.cpp bounds both).
   struct BsdfTreeSize {

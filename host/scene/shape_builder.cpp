@@ -186,7 +186,7 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
       unexpectedChild(e, child);
     }
   }
-  if (!bsdf) bsdf = defaultBsdf();
+  if (!bsdf) bsdf = defaultBsdf(!emitterNode.empty());
   const int material = bsdfIndex(bsdf);
   const std::string name = (e.id.empty() ? anonymousName(e.type) : e.id) + " (" + file->location(node) + ")";
 

@@ -6,6 +6,8 @@
 // |-----------|-------|---------|-------------------------------------------------------|
 // | color0    | rgb   | 0.4     | where frac(u) > ½ and frac(v) > ½ agree (both or neither) |
 // | color1    | rgb   | 0.2     | elsewhere                                             |
+// On a scalar parameter (eval1) the squares swap: Mitsuba 3's eval_1 gives color0 where the two
+// tests disagree (src/textures/checkerboard.cpp, eval vs eval_1).
 // | to_uv     | transform | identity | applied to (u, v) before the lookup             |
 //
 // <texture type="mesh_attribute"> (on a BSDF parameter that scales the whole BSDF: diffuse
@@ -57,6 +59,9 @@ class Texture {
  public:
   virtual ~Texture() = default;
   virtual Color eval(const TexturePoint& point) const = 0;
+  // Mitsuba's eval_1, the value of a texture on a scalar parameter (roughness, opacity, blend weight,
+  // principled's scalars): the luminance of eval(point) unless the plugin defines it otherwise.
+  virtual float eval1(const TexturePoint& point) const { return luminance(eval(point)); }
   // Mean over the unit uv square (what a constant stand-in would be, in lenient mode).
   virtual Color mean() const = 0;
   // Mitsuba's eval_1_grad: (∂/∂u, ∂/∂v) of the luminance of eval(uv), where hasGradient() (a bitmap:

@@ -65,9 +65,11 @@ TEST(MaskBsdf, ChiSquareOfTheNestedPart) {
 }
 
 TEST(MaskBsdf, TexturedOpacityAndTintedNestedPerPoint) {
-  // Checkerboard: colour0 (opacity 1) where frac(u) > ½ and frac(v) > ½ agree, colour1 (0) elsewhere.
+  // Checkerboard on the opacity, a scalar parameter (Mitsuba's eval_1): colour0 (opacity 1) where
+  // frac(u) > ½ and frac(v) > ½ disagree, colour1 (0) where they agree; on the tint, an RGB
+  // parameter, the other way round: colour1 (0.2, 0.4, 0.6) where they disagree.
   const TexturePtr opacity = makeCheckerboard(Color(1.0f), Color(0.0f), UvTransform());
-  const TexturePtr tint = makeCheckerboard(Color(0.2f, 0.4f, 0.6f), Color(0.9f), UvTransform());
+  const TexturePtr tint = makeCheckerboard(Color(0.9f), Color(0.2f, 0.4f, 0.6f), UvTransform());
   const BsdfPtr nested = makeTexturedBsdf(make("diffuse", {num("reflectance", 1.0)}), tint);
   Properties props;
   props.pluginType = "mask";
@@ -76,9 +78,9 @@ TEST(MaskBsdf, TexturedOpacityAndTintedNestedPerPoint) {
   ASSERT_TRUE(m->spatiallyVarying());
   EXPECT_FALSE(m->tinted());  // the factor must not scale the pass-through
   const Vec3 wo = dirFrom(0.8, 0.0), wi = dirFrom(0.5, 2.0);
-  const BsdfPtr solid = m->at(TexturePoint(Vec2(0.25f, 0.25f))), hole = m->at(TexturePoint(Vec2(0.75f, 0.25f)));
+  const BsdfPtr solid = m->at(TexturePoint(Vec2(0.75f, 0.25f))), hole = m->at(TexturePoint(Vec2(0.25f, 0.25f)));
   ASSERT_TRUE(solid && hole);
-  // Solid: the tinted diffuse, colour0 of the tint; hole: nothing but pass-through.
+  // Solid: the tinted diffuse, colour1 of the tint; hole: nothing but pass-through.
   const Color f = solid->eval(wo, wi);
   EXPECT_NEAR(f.r, 0.2f * 0.5f / kPi, 1e-6f);
   EXPECT_NEAR(f.b, 0.6f * 0.5f / kPi, 1e-6f);

@@ -126,7 +126,9 @@ TEST(Principled, TexturedParametersPerPoint) {
   props.set("base_color", rgb("base_color", 0.5f, 0.5f, 0.5f).value);
   props.set("roughness", num("roughness", 0.5).value);
   const TexturePtr colors = makeCheckerboard(Color(0.8f, 0.3f, 0.1f), Color(0.2f), UvTransform());
-  const TexturePtr rough = makeCheckerboard(Color(0.3f), Color(0.7f), UvTransform());
+  // base_color is an RGB parameter (colour0 at uv (0.25, 0.25)), roughness a scalar one, where
+  // Mitsuba's eval_1 gives the checkerboard's other colour: colour1 there.
+  const TexturePtr rough = makeCheckerboard(Color(0.7f), Color(0.3f), UvTransform());
   const BsdfPtr b = createBsdf(props, {}, "p", {{"base_color", colors}, {"roughness", rough}});
   ASSERT_TRUE(b->spatiallyVarying());
   const BsdfPtr here = b->at(TexturePoint(Vec2(0.25f, 0.25f)));

@@ -171,5 +171,20 @@ TEST(SceneShapes, ShapeWithoutBsdfGetsDiffuseHalf) {
   EXPECT_NEAR(f.g, 0.5f * kInvPi, 1e-6f);
 }
 
+// Mitsuba 3 (src/render/shape.cpp): the default diffuse of a shape that carries an area emitter has
+// reflectance 0, so the emitter's radiance is all it sends; a shape beside it keeps the 0.5 one.
+TEST(SceneShapes, EmitterShapeWithoutBsdfIsBlack) {
+  TempDir dir;
+  const Scene s = loadText(dir, sceneXml("<shape type=\"sphere\"><emitter type=\"area\"><rgb name=\"radiance\" "
+                                         "value=\"1\"/></emitter></shape><shape type=\"cube\"/>"));
+  ASSERT_EQ(s.bsdfs.size(), 2u);
+  const Color emitterF = s.bsdfs.at(s.spheres.at(0).bsdf)->eval(Vec3(0, 0, 1), Vec3(0, 0, 1));
+  EXPECT_EQ(emitterF.r, 0.0f);
+  EXPECT_EQ(emitterF.g, 0.0f);
+  EXPECT_EQ(emitterF.b, 0.0f);
+  const Color plainF = s.bsdfs.at(s.meshes.at(0).bsdf)->eval(Vec3(0, 0, 1), Vec3(0, 0, 1));
+  EXPECT_NEAR(plainF.g, 0.5f * kInvPi, 1e-6f);
+}
+
 }  // namespace
 }  // namespace rc::test

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "scene_test_util.h"
+#include "bsdf/rough_textures.h"
 #include "texture/texture.h"
 
 namespace rc::test {
@@ -22,6 +23,21 @@ TEST(Textures, CheckerboardFollowsMitsuba) {
   twice.m[2][2] = 1.0f;
   EXPECT_EQ(makeCheckerboard(c0, c1, twice)->eval(TexturePoint(Vec2(0.3f, 0.1f))), c1);  // (0.6, 0.2)
   EXPECT_EQ(t->mean(), 0.5f * (c0 + c1));
+}
+
+// Mitsuba 3's checkerboard on a scalar parameter (eval_1, e.g. a roughness): color0 where exactly one
+// of frac(u) > ½, frac(v) > ½ holds — the squares of its RGB eval swapped (src/textures/checkerboard.cpp).
+TEST(Textures, CheckerboardOnAScalarParameterSwapsItsSquares) {
+  const TexturePtr alpha = makeCheckerboard(Color(0.0f), Color(0.4f), UvTransform{});  // bsdf_roughdielectric_textured
+  EXPECT_FLOAT_EQ(textureValue1(*alpha, {0.25f, 0.25f}), 0.4f);  // eval gives color0 = 0 here
+  EXPECT_FLOAT_EQ(textureValue1(*alpha, {0.75f, 0.75f}), 0.4f);
+  EXPECT_FLOAT_EQ(textureValue1(*alpha, {0.75f, 0.25f}), 0.0f);
+  EXPECT_FLOAT_EQ(textureValue1(*alpha, {0.25f, 0.75f}), 0.0f);
+  // Colours reduce to their luminance (Mitsuba's RGB eval_1), as for any texture.
+  const TexturePtr rgb = makeCheckerboard(Color(1, 0, 0), Color(0, 0, 1), UvTransform{});
+  EXPECT_FLOAT_EQ(textureValue1(*rgb, {0.75f, 0.25f}), 0.2126f);
+  const TexturePtr bitmap = makeBitmapTexture(1, 1, {Color(0, 1, 0)}, TextureFilter::Nearest, TextureWrap::Repeat, UvTransform{});
+  EXPECT_FLOAT_EQ(textureValue1(*bitmap, {0.5f, 0.5f}), 0.7152f);
 }
 
 TEST(Textures, BitmapBilinearAndWrapModes) {
