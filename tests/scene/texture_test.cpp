@@ -29,15 +29,15 @@ TEST(Textures, CheckerboardFollowsMitsuba) {
 // of frac(u) > ½, frac(v) > ½ holds — the squares of its RGB eval swapped (src/textures/checkerboard.cpp).
 TEST(Textures, CheckerboardOnAScalarParameterSwapsItsSquares) {
   const TexturePtr alpha = makeCheckerboard(Color(0.0f), Color(0.4f), UvTransform{});  // bsdf_roughdielectric_textured
-  EXPECT_FLOAT_EQ(textureValue1(*alpha, {0.25f, 0.25f}), 0.4f);  // eval gives color0 = 0 here
-  EXPECT_FLOAT_EQ(textureValue1(*alpha, {0.75f, 0.75f}), 0.4f);
-  EXPECT_FLOAT_EQ(textureValue1(*alpha, {0.75f, 0.25f}), 0.0f);
-  EXPECT_FLOAT_EQ(textureValue1(*alpha, {0.25f, 0.75f}), 0.0f);
+  EXPECT_FLOAT_EQ(textureValue1(*alpha, TexturePoint(Vec2(0.25f, 0.25f))), 0.4f);  // eval gives color0 = 0 here
+  EXPECT_FLOAT_EQ(textureValue1(*alpha, TexturePoint(Vec2(0.75f, 0.75f))), 0.4f);
+  EXPECT_FLOAT_EQ(textureValue1(*alpha, TexturePoint(Vec2(0.75f, 0.25f))), 0.0f);
+  EXPECT_FLOAT_EQ(textureValue1(*alpha, TexturePoint(Vec2(0.25f, 0.75f))), 0.0f);
   // Colours reduce to their luminance (Mitsuba's RGB eval_1), as for any texture.
   const TexturePtr rgb = makeCheckerboard(Color(1, 0, 0), Color(0, 0, 1), UvTransform{});
-  EXPECT_FLOAT_EQ(textureValue1(*rgb, {0.75f, 0.25f}), 0.2126f);
+  EXPECT_FLOAT_EQ(textureValue1(*rgb, TexturePoint(Vec2(0.75f, 0.25f))), 0.2126f);
   const TexturePtr bitmap = makeBitmapTexture(1, 1, {Color(0, 1, 0)}, TextureFilter::Nearest, TextureWrap::Repeat, UvTransform{});
-  EXPECT_FLOAT_EQ(textureValue1(*bitmap, {0.5f, 0.5f}), 0.7152f);
+  EXPECT_FLOAT_EQ(textureValue1(*bitmap, TexturePoint(Vec2(0.5f, 0.5f))), 0.7152f);
 }
 
 TEST(Textures, BitmapBilinearAndWrapModes) {
