@@ -9,6 +9,10 @@
 #include <cstdio>
 
 #include "block_agreement.h"
+#include "cache/cosine_match.h"
+#include "cl/sh_backend.h"
+#include "core/error.h"
+#include "sh/sh_basis.h"
 #include "test_scene.h"
 
 namespace rc {
@@ -45,6 +49,59 @@ Scene ringSkyFloor(int res) {
   s.emitters.push_back(ringSky());
   test::setTestCamera(s, Vec3(0, 3.0f, 2.0f), Vec3(0, 0, -0.5f), res, res);
   return s;
+}
+
+// Irradiance at the record's normal (local +z) from bands 0..2 of channel c.
+double bandsIrradianceAtNormal(const ProjectResult& r, int c) {
+  float y[9];
+  sh::evalBasis(3, 0.0f, 0.0f, 1.0f, y);
+  double e = 0.0;
+  for (int l = 0; l < 3; ++l)
+    for (int m = -l; m <= l; ++m) e += sh::kClampedCosineBand[l] * r.lambda[9 * c + sh::index(l, m)] * y[sh::index(l, m)];
+  return e;
+}
+
+// One record's rays under a ring-like radiance L(θ) = 1 + 10 cos⁴θ·(1, 2, 3): after the match its
+// bands' irradiance at the normal is the rays' cosine-weighted sum (float rounding), which it was
+// not before (bands 0..2 were 1.1–1.3 % high: cos⁴θ has a band 4); every coefficient but band 0 is
+// left as projected.
+TEST(CosineIrradiance, BandZeroMatchesTheRaysCosineSum) {
+  ProjectBatch b;
+  b.order = 3;
+  b.M = 16;
+  b.N = 32;
+  b.records = 1;
+  b.gradients = false;
+  b.phi0 = {0.3f};
+  const int S = b.M * b.N;
+  b.pattern.resize(2 * S);
+  b.radiance.resize(3 * S);
+  b.distance.assign(S, 1.0f);
+  constexpr int kDropped = 5;  // a sample with a NaN channel: the projection drops it, so must the sum
+  double sum[3] = {};
+  for (int s = 0; s < S; ++s) {
+    b.pattern[2 * s] = 0.25f + 0.5f * float((s * 7) % 5) / 5.0f;
+    b.pattern[2 * s + 1] = 0.5f;
+    const double cosT = 1.0 - ((s / b.N) + double(b.pattern[2 * s])) / b.M;
+    for (int c = 0; c < 3; ++c) {
+      b.radiance[3 * s + c] = static_cast<float>(1.0 + 10.0 * (c + 1) * std::pow(cosT, 4.0));
+      if (s != kDropped) sum[c] += b.radiance[3 * s + c] * cosT * 2.0 * kPiD / S;
+    }
+  }
+  b.radiance[3 * kDropped] = NAN;
+  ProjectResult r;
+  makeScalarBackend()->project(b, r);
+  const ProjectResult before = r;
+  matchCosineIrradianceAtNormal(b, r);
+  for (int c = 0; c < 3; ++c) {
+    std::printf("channel %d: rays' sum %.5f, bands before %.5f, after %.5f\n", c, sum[c],
+                bandsIrradianceAtNormal(before, c), bandsIrradianceAtNormal(r, c));
+    EXPECT_GT(std::fabs(bandsIrradianceAtNormal(before, c) / sum[c] - 1.0), 0.005);
+    EXPECT_NEAR(bandsIrradianceAtNormal(r, c), sum[c], 1e-5 * sum[c]);
+    for (int i = 1; i < 9; ++i) EXPECT_EQ(r.lambda[9 * c + i], before.lambda[9 * c + i]);
+  }
+  b.order = 4;
+  EXPECT_THROW(matchCosineIrradianceAtNormal(b, r), Error);
 }
 
 constexpr int kSize = 48, kSpp = 16, kRefSpp = 256, kSeeds = 4;
