@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "bsdf/alpha_family.h"
+#include "cache/cosine_match.h"
 #include "cache/direct_light_batch.h"
 #include "cache/radius_floor.h"
 #include "cache/record_octree.h"
@@ -579,6 +580,8 @@ std::vector<uint32_t> CacheEngine::buildRecords(const CacheKey& key, const std::
   ProjectResult projected;
   auto t0 = SteadyClock::now();
   backend_.project(rayBatch, projected);
+  // An irradiance cache's records: E at their own normal from the rays, not bands 0..2 alone.
+  if (key.order == 3 && !params_.tlMode) matchCosineIrradianceAtNormal(rayBatch, projected);
   stats_.projection_s += secondsSince(t0);
   const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
   if (!params_.gradients) {

@@ -192,10 +192,9 @@ Color RadianceCache::cosineIrradiance(const Lookup& lk, const Vec3& n, bool grad
 Color RadianceCache::cosineIrradianceLocked(const Lookup& lk, const Vec3& n, bool gradients) const {
   if (!(lk.weightSum > 0.0f)) return Color(0.0f);
   const int bands = std::min(order_, 3), used = bands * bands, n2 = order_ * order_;
-  const float zonal[3] = {kPi, 2.0f * kPi / 3.0f, kPi / 4.0f};
   float A[9];
   for (int l = 0; l < bands; ++l)
-    for (int m = -l; m <= l; ++m) A[l * (l + 1) + m] = zonal[l];
+    for (int m = -l; m <= l; ++m) A[l * (l + 1) + m] = sh::kClampedCosineBand[l];
   const size_t k = static_cast<size_t>(coeffsPerRecord());
   double E[3] = {0.0, 0.0, 0.0}, sumW = 0.0;
   gradients = gradients && gradT_.size() == lambda_.size() && gradB_.size() == lambda_.size();

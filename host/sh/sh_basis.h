@@ -13,6 +13,11 @@ constexpr int index(int l, int m) { return l * (l + 1) + m; }
 void evalBasis(int order, double x, double y, double z, double* out);
 void evalBasis(int order, float x, float y, float z, float* out);
 
+// The clamped cosine max(cos θ, 0) convolved band by band, Â_l for l = 0..2 (π, 2π/3, π/4;
+// Ramamoorthi & Hanrahan 2001): the irradiance of bands 0..2 is E(n) = Σ Â_l L_lm y_lm(n). Its
+// bands 4, 6, ... (Â_4 = π/24) are what an order-3 irradiance leaves out.
+constexpr float kClampedCosineBand[3] = {3.14159265f, 2.09439510f, 0.785398163f};
+
 // Rotation matrix for real SH (block diagonal, band l is (2l+1)×(2l+1)), built from a 3×3
 // proper rotation R (row-major): rotate(f) has coefficients of f'(ω) = f(R⁻¹ω).
 // Stored as the concatenation of the band blocks, band l block row-major: total Σ(2l+1)² values.
