@@ -126,5 +126,61 @@ TEST(Furnace, RoughMirrorSphereReturnsItsAlbedo) {
   }
 }
 
+Scene glassSphereUnderConstantEmitter(const char* plugin, float intIor) {
+  Properties props;
+  props.pluginType = plugin;
+  props.set("int_ior", test::floatProp(intIor));
+  props.set("ext_ior", test::floatProp(1.0f));
+  Scene s;
+  Sphere sp;
+  sp.radius = 1.0f;
+  sp.bsdf = test::addBsdf(s, createBsdf(props, {}));
+  s.spheres.push_back(sp);
+  test::addEmitter(s, test::constantEmitter(Color(1.0f)));
+  return s;
+}
+
+// A lossless dielectric sphere under a constant emitter of radiance 1 (Mitsuba 3 dielectric.cpp,
+// thindielectric.cpp, path.cpp): reflection and refraction conserve energy, the η² radiance
+// scaling of entering and leaving cancel, and every path escapes, so every pixel is exactly 1 —
+// through Russian roulette whose probability carries η² (min(max β · η², 0.95)), from the first
+// segment (rr_depth 1) or Mitsuba's default 5. Seen from inside, every path leaves the sphere once
+// more than it enters: radiance η² (1 for the thin sheet, which does not bend or scale).
+TEST(Furnace, LosslessGlassSphereUnderConstantEmitter) {
+  for (const char* plugin : {"dielectric", "thindielectric"})
+    for (const float ior : {1.5f, 2.42f}) {
+      const test::World w(glassSphereUnderConstantEmitter(plugin, ior));
+      for (const int rrDepth : {1, 5}) {
+        IntegratorSettings settings;
+        settings.rrDepth = rrDepth;
+        for (const Vec3 target : {Vec3(0, 0, 0), Vec3(0.6f, 0.2f, 0.0f), Vec3(0.1f, 0.93f, 0.0f)}) {
+          const Estimate e = estimate(w, settings, rayAt({0.1f, 0.2f, 5.0f}, target), 20000, 9);
+          EXPECT_NEAR(e.mean, 1.0, 5.0 * e.stderr_ + 1e-4) << plugin << " ior " << ior << " rr_depth " << rrDepth;
+        }
+        const double inside = std::string(plugin) == "dielectric" ? double(ior) * ior : 1.0;
+        const Estimate e = estimate(w, settings, rayAt({0.1f, 0.2f, 0.3f}, {0.5f, -0.4f, 0.6f}), 20000, 11);
+        EXPECT_NEAR(e.mean, inside, 5.0 * e.stderr_ + 1e-4) << plugin << " inside, ior " << ior << " rr_depth " << rrDepth;
+      }
+    }
+}
+
+// Mitsuba's max_depth counts path segments through glass like any other: a ray through the centre
+// of a smooth sphere (normal incidence twice, F = ((η − 1)/(η + 1))²) sees the front reflection
+// alone at max_depth 2 (its second vertex, inside on the back face, may not extend the path), and
+// adds the straight-through path (1 − F)² at max_depth 3; the back face's inner reflection needs 4.
+TEST(Furnace, MaxDepthCountsSegmentsThroughGlass) {
+  const float ior = 1.5f;
+  const double F = (ior - 1.0) * (ior - 1.0) / ((ior + 1.0) * (ior + 1.0));
+  const test::World w(glassSphereUnderConstantEmitter("dielectric", ior));
+  const Ray ray = rayAt({0, 0, 5}, {0, 0, 0});
+  IntegratorSettings settings;
+  settings.hideEmitters = true;
+  for (const auto& [depth, expected] : {std::pair{1, 0.0}, {2, F}, {3, F + (1 - F) * (1 - F)}}) {
+    settings.maxDepth = depth;
+    const Estimate e = estimate(w, settings, ray, 20000, 10);
+    EXPECT_NEAR(e.mean, expected, 5.0 * e.stderr_ + 1e-4) << "max_depth " << depth;
+  }
+}
+
 }  // namespace
 }  // namespace rc
