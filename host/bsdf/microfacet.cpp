@@ -215,8 +215,13 @@ static void gaussLegendre(int n, std::vector<double>* nodes, std::vector<double>
   }
 }
 
-double microfacetReflectance(const Microfacet& distr, const Vec3& wi, float eta) {
-  // Requires visible-normal sampling: then the estimator of the albedo is F·G1(wo).
+namespace {
+
+// ∫∫ integrand(m) over [0, 1]² of the visible-normal samples m of wi, by Gauss–Legendre quadrature at
+// Mitsuba's node counts (32² for eta > 1, 128² otherwise). The integrand sees the visible-normal
+// distribution it is sampled from.
+template <class Integrand>
+double visibleNormalQuadrature(const Microfacet& distr, const Vec3& wi, float eta, Integrand integrand) {
   const Microfacet vis(distr.type(), distr.alphaU(), distr.alphaV(), true);
   const int res = eta > 1.0f ? 32 : 128;
   std::vector<double> nodes, weights;
@@ -225,33 +230,31 @@ double microfacetReflectance(const Microfacet& distr, const Vec3& wi, float eta)
   for (int i = 0; i < res; ++i)
     for (int j = 0; j < res; ++j) {
       const Vec2 node(static_cast<float>(nodes[j] * 0.5 + 0.5), static_cast<float>(nodes[i] * 0.5 + 0.5));
-      const Vec3 m = vis.sample(wi, node).first;
-      const Vec3 wo = reflectAbout(wi, m);
-      if (wo.z <= 0.0f || wi.z <= 0.0f) continue;
-      const float f = fresnelDielectric(glm::dot(wi, m), eta).r * vis.smithG1(wo, m);
-      accum += f * weights[i] * weights[j];
+      accum += integrand(vis, vis.sample(wi, node).first) * weights[i] * weights[j];
     }
   return accum * 0.25;  // the product weights sum to 4 on [−1, 1]²
 }
 
+}  // namespace
+
+double microfacetReflectance(const Microfacet& distr, const Vec3& wi, float eta) {
+  // Requires visible-normal sampling: then the estimator of the albedo is F·G1(wo).
+  return visibleNormalQuadrature(distr, wi, eta, [&](const Microfacet& vis, const Vec3& m) -> double {
+    const Vec3 wo = reflectAbout(wi, m);
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0;
+    return fresnelDielectric(glm::dot(wi, m), eta).r * vis.smithG1(wo, m);
+  });
+}
+
 double microfacetTransmittance(const Microfacet& distr, const Vec3& wi, float eta) {
-  const Microfacet vis(distr.type(), distr.alphaU(), distr.alphaV(), true);
-  const int res = eta > 1.0f ? 32 : 128;
-  std::vector<double> nodes, weights;
-  gaussLegendre(res, &nodes, &weights);
-  double accum = 0.0;
-  for (int i = 0; i < res; ++i)
-    for (int j = 0; j < res; ++j) {
-      const Vec2 node(static_cast<float>(nodes[j] * 0.5 + 0.5), static_cast<float>(nodes[i] * 0.5 + 0.5));
-      const Vec3 m = vis.sample(wi, node).first;
-      const float cosIM = glm::dot(wi, m);
-      const FresnelDielectric fr = fresnelDielectric(cosIM, eta);
-      // Refraction about m: wt = m·(cos θi·ηti + cos θt) − wi·ηti.
-      const Vec3 wt = m * (cosIM * fr.etaTi + fr.cosThetaT) - wi * fr.etaTi;
-      if (wt.z * wi.z >= 0.0f) continue;
-      accum += vis.smithG1(wt, m) * (1.0f - fr.r) * weights[i] * weights[j];
-    }
-  return accum * 0.25;
+  return visibleNormalQuadrature(distr, wi, eta, [&](const Microfacet& vis, const Vec3& m) -> double {
+    const float cosIM = glm::dot(wi, m);
+    const FresnelDielectric fr = fresnelDielectric(cosIM, eta);
+    // Refraction about m: wt = m·(cos θi·ηti + cos θt) − wi·ηti.
+    const Vec3 wt = m * (cosIM * fr.etaTi + fr.cosThetaT) - wi * fr.etaTi;
+    if (wt.z * wi.z >= 0.0f) return 0.0;
+    return vis.smithG1(wt, m) * (1.0f - fr.r);
+  });
 }
 
 }  // namespace rc

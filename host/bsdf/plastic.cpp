@@ -18,6 +18,7 @@
 #include "bsdf/bsdf_layer.h"
 #include "bsdf/bsdf_params.h"
 #include "bsdf/fresnel.h"
+#include "bsdf/plastic_params.h"
 #include "bsdf/plugins.h"
 #include "bsdf/rough_textures.h"
 #include "bsdf/warp.h"
@@ -25,19 +26,14 @@
 namespace rc {
 namespace {
 
-inline float meanOf(const Color& c) { return (c.r + c.g + c.b) / 3.0f; }
-
 class PlasticBsdf final : public Bsdf {
  public:
-  PlasticBsdf(const Color& diffuse, const Color& specular, float eta, bool nonlinear, TexturePtr diffuseTexture,
-              TexturePtr specularTexture)
-      : eta_(eta), nonlinear_(nonlinear), diffuseTexture_(std::move(diffuseTexture)),
-        specularTexture_(std::move(specularTexture)) {
-    invEta2_ = 1.0f / (eta * eta);
-    fdrInt_ = fresnelDiffuseReflectance(1.0f / eta);
-    const float dMean = meanOf(diffuse), sMean = meanOf(specular);
-    specularSamplingWeight_ = sMean / (dMean + sMean);
-    setReflectances(diffuse, specular);
+  explicit PlasticBsdf(const PlasticParams& p)
+      : eta_(p.eta), nonlinear_(p.nonlinear), diffuseTexture_(p.diffuseTexture), specularTexture_(p.specularTexture) {
+    invEta2_ = 1.0f / (eta_ * eta_);
+    fdrInt_ = fresnelDiffuseReflectance(1.0f / eta_);
+    specularSamplingWeight_ = p.specularSamplingWeight();
+    setReflectances(p.diffuse, p.specular);
     layers_.bind(*this, kLobeDelta);
   }
 
@@ -140,16 +136,7 @@ class PlasticBsdf final : public Bsdf {
 
 std::shared_ptr<Bsdf> createPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>&,
                                         const BsdfTextures& textures) {
-  const Color diffuse = readReflectance(props, "diffuse_reflectance", 0.5f);
-  const Color specular = readReflectance(props, "specular_reflectance", 1.0f);
-  const float intIor = readIor(props, "int_ior", "polypropylene");
-  const float extIor = readIor(props, "ext_ior", "air");
-  const bool nonlinear = props.getBool("nonlinear", false);
-  if (meanOf(diffuse) + meanOf(specular) <= 0.0f)
-    throwParamError(props, "diffuse_reflectance", "diffuse and specular reflectance are both zero");
-  return std::make_shared<PlasticBsdf>(diffuse, specular, intIor / extIor, nonlinear,
-                                       textureOf(textures, "diffuse_reflectance"),
-                                       textureOf(textures, "specular_reflectance"));
+  return std::make_shared<PlasticBsdf>(readPlasticParams(props, textures));
 }
 
 }  // namespace rc

@@ -34,6 +34,7 @@
 #include "bsdf/coated_sample.h"
 #include "bsdf/fresnel.h"
 #include "bsdf/microfacet.h"
+#include "bsdf/plastic_params.h"
 #include "bsdf/plugins.h"
 #include "bsdf/rough_textures.h"
 #include "bsdf/warp.h"
@@ -43,7 +44,6 @@ namespace {
 
 constexpr int kTransmittanceRes = 64;  // Mitsuba's MI_ROUGH_TRANSMITTANCE_RES
 
-inline float meanOf(const Color& c) { return (c.r + c.g + c.b) / 3.0f; }
 
 struct InterfaceTables {
   std::array<float, kTransmittanceRes> externalTransmittance{};
@@ -79,16 +79,14 @@ std::shared_ptr<const InterfaceTables> interfaceTables(const Microfacet& distr, 
 
 class RoughPlasticBsdf final : public Bsdf {
  public:
-  RoughPlasticBsdf(const Microfacet& distr, const Color& diffuse, const Color& specular, float eta, bool nonlinear,
-                   TexturePtr diffuseTexture, TexturePtr specularTexture)
-      : distr_(distr), eta_(eta), nonlinear_(nonlinear), diffuseTexture_(std::move(diffuseTexture)),
-        specularTexture_(std::move(specularTexture)) {
-    invEta2_ = 1.0f / (eta * eta);
-    const float dMean = meanOf(diffuse), sMean = meanOf(specular);
-    specularSamplingWeight_ = sMean / (dMean + sMean);
-    tables_ = interfaceTables(distr, eta);
+  RoughPlasticBsdf(const Microfacet& distr, const PlasticParams& p)
+      : distr_(distr), eta_(p.eta), nonlinear_(p.nonlinear), diffuseTexture_(p.diffuseTexture),
+        specularTexture_(p.specularTexture) {
+    invEta2_ = 1.0f / (eta_ * eta_);
+    specularSamplingWeight_ = p.specularSamplingWeight();
+    tables_ = interfaceTables(distr, eta_);
     internalReflectance_ = tables_->internalReflectance;
-    setReflectances(diffuse, specular);
+    setReflectances(p.diffuse, p.specular);
     layers_.bind(*this, kLobeGlossy);
   }
 
@@ -216,17 +214,8 @@ class RoughPlasticBsdf final : public Bsdf {
 
 std::shared_ptr<Bsdf> createRoughPlasticBsdf(const Properties& props, const std::vector<BsdfPtr>&,
                                              const BsdfTextures& textures) {
-  const Color diffuse = readReflectance(props, "diffuse_reflectance", 0.5f);
-  const Color specular = readReflectance(props, "specular_reflectance", 1.0f);
-  const float intIor = readIor(props, "int_ior", "polypropylene");
-  const float extIor = readIor(props, "ext_ior", "air");
-  const bool nonlinear = props.getBool("nonlinear", false);
-  if (meanOf(diffuse) + meanOf(specular) <= 0.0f)
-    throwParamError(props, "diffuse_reflectance", "diffuse and specular reflectance are both zero");
-  const Microfacet distr = readMicrofacet(props, false);
-  return std::make_shared<RoughPlasticBsdf>(distr, diffuse, specular, intIor / extIor, nonlinear,
-                                            textureOf(textures, "diffuse_reflectance"),
-                                            textureOf(textures, "specular_reflectance"));
+  const PlasticParams params = readPlasticParams(props, textures);
+  return std::make_shared<RoughPlasticBsdf>(readMicrofacet(props, false), params);
 }
 
 }  // namespace rc
