@@ -2,8 +2,6 @@
 
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include "bsdf/rough_textures.h"
 #include "brdf/table_cache.h"
@@ -140,12 +138,7 @@ std::vector<CacheFileEntry> loadCacheFile(const std::string& path, uint64_t expe
 
 std::vector<CacheFileEntry> loadCacheFile(const std::string& path, const uint64_t* expectedSceneHash,
                                           uint64_t* sceneHash) {
-  requireRegularFile(path, "cache file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open cache file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string data = ss.str();
+  const std::string data = readRegularFile(path, "cache file");
   if (data.size() < 8 + 4 + 8 + 4 + 8 || std::memcmp(data.data(), kMagic, 8) != 0)
     throw Error(path + ": not an rcache cache file (bad magic)");
   uint64_t stored;

@@ -4,6 +4,8 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 
 #include "core/error.h"
 
@@ -14,6 +16,15 @@ void requireRegularFile(const std::string& path, const std::string& what) {
   if (stat(path.c_str(), &st) != 0) throw Error("cannot open " + what + " '" + path + "' (" + std::strerror(errno) + ")");
   if (S_ISDIR(st.st_mode)) throw Error("cannot open " + what + " '" + path + "': it is a directory");
   if (!S_ISREG(st.st_mode)) throw Error("cannot open " + what + " '" + path + "': not a regular file");
+}
+
+std::string readRegularFile(const std::string& path, const std::string& what) {
+  requireRegularFile(path, what);
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream contents;
+  if (in) contents << in.rdbuf();
+  if (!in || in.bad()) throw Error("cannot open " + what + " '" + path + "' (" + std::strerror(errno) + ")");
+  return contents.str();
 }
 
 std::string irregularFileReason(const std::string& path) {

@@ -10,6 +10,10 @@ namespace rc {
 // anything but a regular file. `what` names the role: "scene file", "mesh file", ...
 void requireRegularFile(const std::string& path, const std::string& what);
 
+// The whole of a regular file (requireRegularFile's checks first). Throws rc::Error("cannot open
+// <what> '<path>' ...") when it cannot be opened or read.
+std::string readRegularFile(const std::string& path, const std::string& what);
+
 // What keeps `path` from being read: "" for a regular file, else "not found", "it is a directory"
 // or "not a regular file", for callers that word their own message.
 std::string irregularFileReason(const std::string& path);

@@ -2,9 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
 #include "core/error.h"
 #include "core/regular_file.h"
@@ -73,12 +71,7 @@ CurveData parseCurves(const std::string& text, const std::string& path, CurveBas
 }
 
 CurveData loadCurves(const std::string& path, CurveBasis basis) {
-  requireRegularFile(path, "curve file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open curve file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseCurves(text.str(), path, basis);
+  return parseCurves(readRegularFile(path, "curve file"), path, basis);
 }
 
 }  // namespace rc

@@ -366,12 +366,7 @@ void readElement(BodyReader& body, const PlyElement& e, size_t fileSize, MeshDat
 }  // namespace
 
 MeshData loadPly(const std::string& path) {
-  requireRegularFile(path, "mesh file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open mesh file '" + path + "'");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  const std::string data = ss.str();
+  const std::string data = readRegularFile(path, "mesh file");
   auto fail = [&](const std::string& msg) -> Error { return Error(path + ": " + msg); };
 
   const PlyHeader header = parseHeader(path, data);

@@ -5,8 +5,6 @@
 
 #include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 #include "core/error.h"
@@ -96,12 +94,7 @@ class Inflater {
 }  // namespace
 
 MeshData loadSerialized(const std::string& path, int shapeIndex) {
-  requireRegularFile(path, "mesh file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open the serialized mesh");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  const std::string file = ss.str();
+  const std::string file = readRegularFile(path, "mesh file");
   auto fail = [&](const std::string& what) -> void { throw Error(path + ": " + what); };
   const auto* bytes = reinterpret_cast<const unsigned char*>(file.data());
   if (file.size() < 4 || readLittle<uint16_t>(bytes) != kMagic) fail("not a Mitsuba serialized mesh (bad magic number)");

@@ -1,8 +1,6 @@
 #include "scene/xml_file.h"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include "core/error.h"
 #include "core/regular_file.h"
@@ -13,18 +11,10 @@ std::shared_ptr<XmlFile> XmlFile::load(const std::string& path, const std::strin
   auto file = std::make_shared<XmlFile>();
   file->path_ = path;
   try {
-    requireRegularFile(path, "scene file");
+    file->text_ = readRegularFile(path, "scene file");
   } catch (const Error& e) {
     throw Error(includedFrom.empty() ? std::string(e.what()) : includedFrom + ": " + e.what());
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const std::string msg = "cannot open scene file '" + path + "'";
-    throw Error(includedFrom.empty() ? msg : includedFrom + ": " + msg);
-  }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  file->text_ = ss.str();
   file->lineStarts_.push_back(0);
   for (size_t i = 0; i < file->text_.size(); ++i)
     if (file->text_[i] == '\n') file->lineStarts_.push_back(i + 1);
