@@ -61,6 +61,8 @@ std::string OpenClBackend::deviceName() const {
   return "OpenCL: " + ctx_->info().name + " (" + ctx_->info().platformName + ")";
 }
 
+int OpenClBackend::kernelThreads() const { return ctx_->info().type == "CPU" ? ctx_->info().computeUnits : 0; }
+
 void OpenClBackend::prepare(int order) {
   std::lock_guard<std::mutex> lock(mutex_);
   state(order);

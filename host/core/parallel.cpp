@@ -8,6 +8,8 @@
 #include <thread>
 #include <vector>
 
+#include "core/cpu_clock.h"
+
 namespace rc {
 
 namespace {
@@ -17,6 +19,10 @@ int gThreads = 0;
 // runs serially on that thread (the outer loop already keeps every thread busy, and waiting for
 // pool workers that are themselves inside the outer loop would deadlock).
 thread_local bool tInsideLoop = false;
+// The loops this thread started (loopAccountOfThisThread); set while one is being timed, so a loop
+// nested in its body is not counted twice.
+thread_local LoopAccount tLoopAccount;
+thread_local bool tTimingLoop = false;
 
 // Persistent workers: a render makes thousands of parallelFor calls (per batch of records, per
 // band), and creating and joining threads for each cost ≈ 5 % of the run time.
@@ -106,6 +112,8 @@ int threadCount() {
   return hw ? static_cast<int>(hw) : 1;
 }
 
+LoopAccount loopAccountOfThisThread() { return tLoopAccount; }
+
 void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t)>& body) {
   if (n == 0) return;
   if (chunk == 0) chunk = 1;
@@ -127,6 +135,9 @@ void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t
       }
     }
   };
+  const bool timed = chunks > 1 && !tInsideLoop && !tTimingLoop;
+  const double cpuStart = timed ? threadCpuSeconds() : 0.0;
+  tTimingLoop |= timed;
   if (chunks <= 1 || threads <= 1 || tInsideLoop) {
     work();
   } else {
@@ -136,6 +147,11 @@ void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t
       tInsideLoop = false;
     };
     poolFor(threads)->run(job);
+  }
+  if (timed) {
+    tTimingLoop = false;
+    tLoopAccount.cpuS += threadCpuSeconds() - cpuStart;
+    ++tLoopAccount.loops;
   }
   if (failure) std::rethrow_exception(failure);
 }

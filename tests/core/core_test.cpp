@@ -14,6 +14,7 @@
 #include "core/math.h"
 #include "core/parallel.h"
 #include "core/parallel_sort.h"
+#include "core/phase_cpu.h"
 #include "core/properties.h"
 #include "core/rng.h"
 
@@ -144,6 +145,34 @@ TEST(Parallel, CoversRangeOnceAndRethrows) {
                  if (b == 50) throw Error("boom");
                }),
                Error);
+  setThreadCount(0);
+}
+
+namespace {
+// Burns `seconds` of the calling thread's CPU time.
+void burnCpu(double seconds) {
+  const double end = threadCpuSeconds() + seconds;
+  volatile double x = 0;
+  while (threadCpuSeconds() < end) x = x + 1.0;
+}
+}  // namespace
+
+TEST(Parallel, PhaseCpuTellsSerialWorkFromLoopsAtOneThread) {
+  setThreadCount(1);
+  const PhaseCpuMeter meter;
+  burnCpu(0.02);  // serial
+  parallelFor(4, 1, [](size_t, size_t) {
+    burnCpu(0.01);
+    parallelFor(3, 1, [](size_t, size_t) {});  // nested: part of the outer loop, not a loop of its own
+  });
+  parallelFor(1, 1, [](size_t, size_t) { burnCpu(0.01); });  // one chunk: nothing to share, serial
+  const PhaseCpu cpu = meter.elapsed();
+  EXPECT_EQ(cpu.loops, 1u);
+  EXPECT_GE(cpu.loopsS, 0.04);
+  EXPECT_LT(cpu.loopsS, 0.06);
+  EXPECT_GE(cpu.serialS, 0.03);
+  EXPECT_LT(cpu.serialS, cpu.loopsS);
+  EXPECT_LT(cpu.otherThreadsS, 0.01);  // no other thread worked
   setThreadCount(0);
 }
 

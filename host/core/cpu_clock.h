@@ -1,0 +1,16 @@
+#pragma once
+// CPU time, which waiting for a core does not add to: the measure of where work goes on a machine
+// shared with other processes (bench/RESULTS.md, tenth session), where wall-clock time is not.
+#include <time.h>
+
+namespace rc {
+
+inline double cpuSeconds(clockid_t clock) {
+  timespec t{};
+  clock_gettime(clock, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+inline double processCpuSeconds() { return cpuSeconds(CLOCK_PROCESS_CPUTIME_ID); }  // all threads
+inline double threadCpuSeconds() { return cpuSeconds(CLOCK_THREAD_CPUTIME_ID); }    // the caller's
+
+}  // namespace rc
