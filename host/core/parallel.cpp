@@ -41,9 +41,12 @@ class WorkerPool {
   }
   int helpers() const { return static_cast<int>(workers_.size()); }
 
-  // Runs `work` on every worker and on the calling thread; returns when all have returned. A
-  // second caller while the pool is busy (two loops started from different threads) runs its
-  // work alone on its own thread.
+  // Runs `work` on the calling thread and on every worker that wakes in time; returns when all
+  // that joined have returned. `work` must return only when the loop has no chunk left to hand
+  // out: then the job is withdrawn, so the caller waits for the workers still running a chunk but
+  // never for a worker that has yet to wake (a scheduler wake-up for nothing, twice per loop: the
+  // worker's, then the caller's). A second caller while the pool is busy (two loops started from
+  // different threads) runs its work alone on its own thread.
   void run(const std::function<void()>& work) {
     std::unique_lock<std::mutex> owner(runMutex_, std::try_to_lock);
     if (!owner.owns_lock()) {
@@ -53,14 +56,13 @@ class WorkerPool {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       job_ = &work;
-      busy_ = static_cast<int>(workers_.size());
       ++generation_;
     }
     wake_.notify_all();
     work();
     std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [this] { return busy_ == 0; });
     job_ = nullptr;
+    done_.wait(lock, [this] { return running_ == 0; });
   }
 
  private:
@@ -74,10 +76,12 @@ class WorkerPool {
         if (stop_) return;
         seen = generation_;
         job = job_;
+        if (!job) continue;  // withdrawn: the loop ended before this worker woke
+        ++running_;
       }
       (*job)();
       std::lock_guard<std::mutex> lock(mutex_);
-      if (--busy_ == 0) done_.notify_one();
+      if (--running_ == 0) done_.notify_one();
     }
   }
 
@@ -87,7 +91,7 @@ class WorkerPool {
   std::vector<std::thread> workers_;
   const std::function<void()>* job_ = nullptr;
   uint64_t generation_ = 0;
-  int busy_ = 0;
+  int running_ = 0;  // workers inside the current job
   bool stop_ = false;
 };
 

@@ -148,6 +148,23 @@ TEST(Parallel, CoversRangeOnceAndRethrows) {
   setThreadCount(0);
 }
 
+// Loops shorter than a worker's wake-up: the caller takes every chunk and withdraws the job before
+// the worker wakes, so a worker joins late or not at all; each index must still run once, and a
+// worker waking late must not touch a loop that has returned (the sanitizer pass checks that).
+TEST(Parallel, ShortLoopsCoverEveryIndexOnceWhateverJoins) {
+  for (int threads : {2, 3}) {
+    setThreadCount(threads);
+    for (int loop = 0; loop < 3000; ++loop) {
+      std::vector<int> hits(3, 0);
+      parallelFor(hits.size(), 1, [&](size_t b, size_t e) {
+        for (size_t i = b; i < e; ++i) hits[i]++;
+      });
+      ASSERT_EQ(hits, std::vector<int>(3, 1)) << threads << " threads, loop " << loop;
+    }
+  }
+  setThreadCount(0);
+}
+
 namespace {
 // Burns `seconds` of the calling thread's CPU time.
 void burnCpu(double seconds) {
