@@ -14,18 +14,22 @@ namespace rc {
 struct PhaseCpu {
   double serialS = 0.0, loopsS = 0.0, otherThreadsS = 0.0;
   uint64_t loops = 0;  // parallel loops started (each wakes the pool's workers)
+  uint64_t sleeps = 0;  // times the phase's thread slept (waiting for workers, kernels, locks)
   void add(const PhaseCpu& o) {
     serialS += o.serialS;
     loopsS += o.loopsS;
     otherThreadsS += o.otherThreadsS;
     loops += o.loops;
+    sleeps += o.sleeps;
   }
 };
 
 // Started on the phase's thread; elapsed() read on the same thread.
 class PhaseCpuMeter {
  public:
-  PhaseCpuMeter() : process_(processCpuSeconds()), thread_(threadCpuSeconds()), loop_(loopAccountOfThisThread()) {}
+  PhaseCpuMeter()
+      : process_(processCpuSeconds()), thread_(threadCpuSeconds()), sleeps_(threadSleeps()),
+        loop_(loopAccountOfThisThread()) {}
   PhaseCpu elapsed() const {
     const LoopAccount now = loopAccountOfThisThread();
     const double thread = threadCpuSeconds() - thread_;
@@ -34,11 +38,13 @@ class PhaseCpuMeter {
     p.serialS = thread - p.loopsS;
     p.otherThreadsS = processCpuSeconds() - process_ - thread;
     p.loops = now.loops - loop_.loops;
+    p.sleeps = static_cast<uint64_t>(threadSleeps() - sleeps_);
     return p;
   }
 
  private:
   double process_, thread_;
+  long sleeps_;
   LoopAccount loop_;
 };
 

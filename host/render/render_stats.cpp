@@ -27,6 +27,7 @@ void RenderStats::setPhaseCpu(const std::string& phase, const PhaseCpu& cpu) {
   set("cpu_" + phase + "_loops_s", cpu.loopsS);
   set("cpu_" + phase + "_other_threads_s", cpu.otherThreadsS);
   set(phase + "_parallel_loops", double(cpu.loops));
+  set(phase + "_control_thread_sleeps", double(cpu.sleeps));
 }
 
 double RenderStats::get(const std::string& key, double fallback) const {
