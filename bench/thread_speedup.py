@@ -10,10 +10,12 @@ which shows how much of the run kept the N threads working.
 
 --estimate: a measure that load from other processes does not distort (for a shared machine): runs
 each configuration at -t 1 only and reads each phase's CPU split from the statistics (serial: the
-control thread outside parallel loops; loops: inside them; other: PoCL's kernel thread), then
-predicts the N-thread speed-up as (serial + loops + other) / (serial + (loops + other) / N) — an
-upper bound (Amdahl): it leaves out waking the pool for each loop and the wait for a loop's last
-chunk, which is why the count of parallel loops is printed too. Median of --reps runs.
+control thread outside parallel loops; loops: inside them; span: the loops on 2 threads with equal
+chunks, so a loop of few chunks counts its last one; other: PoCL's kernel thread), then predicts
+the 2-thread speed-up two ways: Amdahl, (serial + loops + other) / (serial + (loops + other) / 2),
+and with the loops' span, (serial + loops + other) / (serial + span + other / 2). Both are upper
+bounds: they leave out waking the pool for each loop (the count of parallel loops is printed) and
+chunks of unequal cost. Median of --reps runs; only for --threads 2.
 
 Usage (repository root, after scripts/build.sh):
   python3 bench/thread_speedup.py [--threads 2] [--res 256] [--spp 16] [--reps 3] [--scenes cornell_glossy]
@@ -58,22 +60,22 @@ def estimate(args, root, work):
                     phase = CPU_SPLIT[k]
                     if "cpu_%s_serial_s" % phase in s and (k in s):
                         runs.setdefault((scene, k), []).append(s)
-    n = args.threads
-    print("| scene | phase | serial s | loops s | other s | serial share | loops | estimate at %d |" % n)
-    print("|---|---|---|---|---|---|---|---|")
+    print("| scene | phase | serial s | loops s | span at 2 s | other s | serial share | loops | Amdahl at 2 | with span at 2 |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for scene in args.scenes:
         for integrator, keys in PHASES.items():
             for k in keys:
                 if (scene, k) not in runs:
-                    print("| %s | %s | — | — | — | — | — | not run |" % (scene, k))
+                    print("| %s | %s | — | — | — | — | — | — | not run | |" % (scene, k))
                     continue
                 phase = CPU_SPLIT[k]
-                rows = [(r["cpu_%s_serial_s" % phase], r["cpu_%s_loops_s" % phase], r["cpu_%s_other_threads_s" % phase],
-                         r["%s_parallel_loops" % phase]) for r in runs[(scene, k)]]
-                serial, loops, other, count = (statistics.median(col) for col in zip(*rows))
+                rows = [(r["cpu_%s_serial_s" % phase], r["cpu_%s_loops_s" % phase], r["cpu_%s_loops_span_at_2_s" % phase],
+                         r["cpu_%s_other_threads_s" % phase], r["%s_parallel_loops" % phase]) for r in runs[(scene, k)]]
+                serial, loops, span, other, count = (statistics.median(col) for col in zip(*rows))
                 total = serial + loops + other
-                print("| %s | %s | %.3f | %.3f | %.3f | %.1f %% | %d | %.2f× |" % (
-                    scene, k, serial, loops, other, 100 * serial / total, count, total / (serial + (loops + other) / n)))
+                print("| %s | %s | %.3f | %.3f | %.3f | %.3f | %.1f %% | %d | %.2f× | %.2f× |" % (
+                    scene, k, serial, loops, span, other, 100 * serial / total, count,
+                    total / (serial + (loops + other) / 2), total / (serial + span + other / 2)))
 
 
 def main():
@@ -89,6 +91,8 @@ def main():
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     work = tempfile.mkdtemp(prefix="rcache_threads_")
     if args.estimate:
+        if args.threads != 2:
+            ap.error("--estimate predicts 2 threads only")
         estimate(args, root, work)
         return
     best, busy = {}, {}

@@ -154,7 +154,9 @@ void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t
   }
   if (timed) {
     tTimingLoop = false;
-    tLoopAccount.cpuS += threadCpuSeconds() - cpuStart;
+    const double cpu = threadCpuSeconds() - cpuStart;
+    tLoopAccount.cpuS += cpu;
+    tLoopAccount.spanAt2S += cpu * double((chunks + 1) / 2) / double(chunks);
     ++tLoopAccount.loops;
   }
   if (failure) std::rethrow_exception(failure);

@@ -13,11 +13,13 @@ namespace rc {
 
 struct PhaseCpu {
   double serialS = 0.0, loopsS = 0.0, otherThreadsS = 0.0;
+  double loopsSpanAt2S = 0.0;  // the loops' time on 2 threads (LoopAccount::spanAt2S)
   uint64_t loops = 0;  // parallel loops started (each wakes the pool's workers)
   uint64_t sleeps = 0;  // times the phase's thread slept (waiting for workers, kernels, locks)
   void add(const PhaseCpu& o) {
     serialS += o.serialS;
     loopsS += o.loopsS;
+    loopsSpanAt2S += o.loopsSpanAt2S;
     otherThreadsS += o.otherThreadsS;
     loops += o.loops;
     sleeps += o.sleeps;
@@ -35,6 +37,7 @@ class PhaseCpuMeter {
     const double thread = threadCpuSeconds() - thread_;
     PhaseCpu p;
     p.loopsS = now.cpuS - loop_.cpuS;
+    p.loopsSpanAt2S = now.spanAt2S - loop_.spanAt2S;
     p.serialS = thread - p.loopsS;
     p.otherThreadsS = processCpuSeconds() - process_ - thread;
     p.loops = now.loops - loop_.loops;

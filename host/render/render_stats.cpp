@@ -25,6 +25,7 @@ void RenderStats::setJson(const std::string& key, const std::string& rawJson) { 
 void RenderStats::setPhaseCpu(const std::string& phase, const PhaseCpu& cpu) {
   set("cpu_" + phase + "_serial_s", cpu.serialS);
   set("cpu_" + phase + "_loops_s", cpu.loopsS);
+  set("cpu_" + phase + "_loops_span_at_2_s", cpu.loopsSpanAt2S);
   set("cpu_" + phase + "_other_threads_s", cpu.otherThreadsS);
   set(phase + "_parallel_loops", double(cpu.loops));
   set(phase + "_control_thread_sleeps", double(cpu.sleeps));

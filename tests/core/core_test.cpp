@@ -187,6 +187,10 @@ TEST(Parallel, PhaseCpuTellsSerialWorkFromLoopsAtOneThread) {
   EXPECT_EQ(cpu.loops, 1u);
   EXPECT_GE(cpu.loopsS, 0.04);
   EXPECT_LT(cpu.loopsS, 0.06);
+  EXPECT_DOUBLE_EQ(cpu.loopsSpanAt2S, cpu.loopsS / 2);  // 4 chunks: 2 on each of 2 threads
+  const PhaseCpuMeter odd;
+  parallelFor(3, 1, [](size_t, size_t) { burnCpu(0.01); });
+  EXPECT_NEAR(odd.elapsed().loopsSpanAt2S, odd.elapsed().loopsS * 2 / 3, 1e-9);  // 3 chunks: 2 on one thread
   EXPECT_GE(cpu.serialS, 0.03);
   EXPECT_LT(cpu.serialS, cpu.loopsS);
   EXPECT_LT(cpu.otherThreadsS, 0.01);  // no other thread worked
