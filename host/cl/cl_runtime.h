@@ -24,7 +24,7 @@ struct DeviceInfo {
   std::string label() const;  // "pthread-... (Portable Computing Language, platform 0 device 0)"
 };
 
-// `-t N` means N threads of work in all (ARCHITECTURE.md §Threads), kernels included: PoCL's CPU
+// `-t N` means N threads of work in all (docs/ARCHITECTURE.md §Threads), kernels included: PoCL's CPU
 // device runs kernels on its own pool of threads, sized once, when the platform is first created,
 // from POCL_MAX_PTHREAD_COUNT (PoCL 3.1's pthread device honours it; the device then reports that
 // many compute units). Sets it to `threads` unless the user set it already; a GPU is unaffected.
