@@ -5,10 +5,13 @@ fill, final pass), the CPU samples of the main thread (M), the worker (W) and Po
 
 A load-independent companion to thread_speedup.py (which times 1 against 2 threads and needs a quiet
 machine): CPU samples do not depend on how long the threads waited for a core. The estimate of the
-2-thread speed-up of a phase is (M + W + P/2) / (M + P/2) — PoCL runs the kernels on its own
-threads at any -t while the main thread waits, the rest scales — an upper bound, since waits for the
-worker at the end of each parallel loop are not samples. On a loaded machine the worker starts its
-share of each loop late, so the main thread does more of it and the estimate is low, not high.
+2-thread speed-up of a phase is (M + W + P) / (M + P/2) — at -t 1 everything runs on one core
+(PoCL's kernel threads are limited to -t since the tenth session; before, the formula was
+(M + W + P/2) / (M + P/2) because PoCL used every core at any -t), at -t 2 the main thread's own
+samples and half the kernel work remain — an upper bound, since waits for the worker at the end of
+each parallel loop are not samples. On a loaded machine the worker starts its share of each loop
+late, so the main thread does more of it and the estimate is low, not high. thread_speedup.py
+--estimate is the steadier measure (CPU time split at 1 thread, from the renderer's statistics).
 
 Phases are told apart by symbols: the fill from the first sample in CacheEngine/RadianceCache, the
 final pass from the first sample in FinalPass. Needs perf and a build with symbols (Release has them).
@@ -48,7 +51,7 @@ def report(rows, lo, hi, name, main, worker, top):
                 syms[tid][s[:90]] += 1
     m, w, p = count["M"], count["W"], count["P"]
     print("%s: samples main %d, worker %d, PoCL %d; estimated 2-thread speed-up %.2fx"
-          % (name, m, w, p, (m + w + p / 2) / max(1e-9, m + p / 2)))
+          % (name, m, w, p, (m + w + p) / max(1e-9, m + p / 2)))
     for s in sorted(syms[main], key=lambda s: syms[worker][s] - syms[main][s])[:top]:
         print("  %6d %6d  %s" % (syms[main][s], syms[worker][s], s))
 

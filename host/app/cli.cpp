@@ -18,11 +18,13 @@
 #include "app/stats_report.h"
 #include "app/walk_render.h"
 #include "cache/rcache_integrator.h"
+#include "cl/cl_runtime.h"
 #include "cl/sh_backend.h"
 #include "cl/verify.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/phase_cpu.h"
 #include "core/timing.h"
 #include "geometry/accel.h"
 #include "render/image_io.h"
@@ -170,6 +172,7 @@ void reportStats(const RenderStats& stats, const RenderArgs& ra) {
 // Seconds spent in each phase of one image render.
 struct PhaseSeconds {
   double load = 0.0, bvh = 0.0, render = 0.0, write = 0.0;
+  PhaseCpu renderCpu;
 };
 
 void recordImageStats(RenderStats& stats, const RenderArgs& ra, const std::string& output, const Integrator& integrator,
@@ -179,17 +182,20 @@ void recordImageStats(RenderStats& stats, const RenderArgs& ra, const std::strin
   stats.setText("integrator", integrator.name());
   stats.setText("device", backend ? backend->deviceName() : std::string("cpu (path tracer needs no kernels)"));
   stats.set("threads", threadCount());
+  if (backend && backend->kernelThreads() > 0) stats.set("kernel_threads", backend->kernelThreads());
   stats.set("width", image.width);
   stats.set("height", image.height);
   stats.set("time_load_s", t.load);
   stats.set("time_bvh_s", t.bvh);
   stats.set("time_render_s", t.render);
   stats.set("time_write_s", t.write);
+  stats.setPhaseCpu("render", t.renderCpu);
 }
 
 int runRender(const std::vector<std::string>& args) {
   RenderArgs ra = parseRenderArgs(args);
   if (ra.threads > 0) setThreadCount(ra.threads);
+  cl::limitCpuDeviceThreads(ra.threads);  // before any OpenCL call: the platform reads it once
   const std::string output = ra.outputPath.empty() ? defaultOutputPath(ra.scenePath) : ra.outputPath;
   checkOutputs(ra, output);
   installSignalHandlers();
@@ -225,9 +231,11 @@ int runRender(const std::vector<std::string>& args) {
     return gCancel ? 128 + gSignal.load() : 0;
   }
   const auto tRender = SteadyClock::now();
+  const PhaseCpuMeter renderCpu;
   Image image = ra.timeBudget > 0.0 ? renderProgressive(*integrator, ctx, {ra.timeBudget}, stats)
                                     : integrator->render(ctx, stats);
   t.render = secondsSince(tRender);
+  t.renderCpu = renderCpu.elapsed();
   bar.finish();
 
   const auto tWrite = SteadyClock::now();

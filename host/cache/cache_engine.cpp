@@ -81,7 +81,7 @@ ParallelArray<ShadePoint> gather(PointView pts, const std::vector<size_t>& idx) 
 // Frees the lookups' contribution lists on all threads: hundreds of thousands of small
 // allocations per call, which the destructor would free one by one on the calling thread.
 void releaseLookups(std::vector<Lookup>& lookups) {
-  parallelFor(lookups.size(), 4096, [&](size_t b, size_t e) {
+  parallelFor(lookups.size(), 1024, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) std::vector<RcContribution>().swap(lookups[i].entries);
   });
   lookups.clear();
@@ -768,26 +768,30 @@ void CacheEngine::shadeLambda(PointView pts, size_t begin, size_t count, int ord
   dotBatch.lambda = std::move(lambda);
   dotBatch.wo.resize(3 * count);
   dotBatch.material.resize(count);
-  for (size_t j = 0; j < count; ++j) {
-    const ShadePoint& sp = point(j);
-    for (int c = 0; c < 3; ++c) dotBatch.wo[3 * j + c] = sp.wo[c];
-    const MaterialPlan& plan = tables_.plans()[static_cast<size_t>(sp.hit.bsdf)];
-    dotBatch.material[j] = plan.tableIndex;
-    if (!plan.alphaNodes.empty()) {  // a roughness texture: the table of the point's α
-      const float alpha = alphaFamilyOf(*ctx_.scene.bsdfs[static_cast<size_t>(sp.hit.bsdf)])->alphaAt(sp.hit.uv);
-      const float u = static_cast<float>(hashMix(sp.seed, 0, kSaltAlphaNode) >> 40) * 0x1p-24f;
-      dotBatch.material[j] = plan.tableAt(alpha, u);
+  parallelFor(count, 1024, [&](size_t b, size_t e) {
+    for (size_t j = b; j < e; ++j) {
+      const ShadePoint& sp = point(j);
+      for (int c = 0; c < 3; ++c) dotBatch.wo[3 * j + c] = sp.wo[c];
+      const MaterialPlan& plan = tables_.plans()[static_cast<size_t>(sp.hit.bsdf)];
+      dotBatch.material[j] = plan.tableIndex;
+      if (!plan.alphaNodes.empty()) {  // a roughness texture: the table of the point's α
+        const float alpha = alphaFamilyOf(*ctx_.scene.bsdfs[static_cast<size_t>(sp.hit.bsdf)])->alphaAt(sp.hit.uv);
+        const float u = static_cast<float>(hashMix(sp.seed, 0, kSaltAlphaNode) >> 40) * 0x1p-24f;
+        dotBatch.material[j] = plan.tableAt(alpha, u);
+      }
     }
-  }
+  });
   tables_.fillBatch(dotBatch);
   std::vector<float> res;
   backend_.brdfDot(dotBatch, res);
-  for (size_t j = 0; j < count; ++j) {
-    // Extrapolation by gradients (or SH ringing) can dip below zero where light changes
-    // abruptly; negative radiance is not physical and is clamped.
-    const Color Lo = glm::max(Color(res[3 * j], res[3 * j + 1], res[3 * j + 2]), Color(0.0f));
-    slot(j) = isFinite(Lo) ? Lo : Color(0.0f);
-  }
+  parallelFor(count, 4096, [&](size_t b, size_t e) {
+    for (size_t j = b; j < e; ++j) {
+      // Extrapolation by gradients (or SH ringing) can dip below zero where light changes
+      // abruptly; negative radiance is not physical and is clamped.
+      const Color Lo = glm::max(Color(res[3 * j], res[3 * j + 1], res[3 * j + 2]), Color(0.0f));
+      slot(j) = isFinite(Lo) ? Lo : Color(0.0f);
+    }
+  });
   stats_.dot_s += secondsSince(t0);
 }
 

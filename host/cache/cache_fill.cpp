@@ -85,6 +85,7 @@ void fillPoints(const RcacheRun& run, const PassPoints& pass, size_t begin, size
 
 FillReport fillCache(const RcacheRun& run) {
   const auto start = SteadyClock::now();
+  const PhaseCpuMeter cpu;
   FillReport report;
   JsonWriter passes;
   passes.beginArray();
@@ -119,6 +120,7 @@ FillReport fillCache(const RcacheRun& run) {
   passes.endArray();
   report.passesJson = passes.str();
   report.seconds = secondsSince(start);
+  report.cpu = cpu.elapsed();
   return report;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cache/rcache_run.h"
+#include "core/phase_cpu.h"
 
 namespace rc {
 
@@ -15,6 +16,7 @@ struct FillReport {
   size_t edgePixels = 0;          // pixels whose quadrants the last pass looked up
   bool interrupted = false;
   double seconds = 0.0;
+  PhaseCpu cpu;
 };
 
 FillReport fillCache(const RcacheRun& run);

@@ -187,6 +187,7 @@ bool RcachePasses::addPass(Film& film, int firstSample) {
   if (pathPasses_) return pathPasses_->addPass(film, firstSample);
   if (fill_.interrupted) return false;
   const auto passStart = SteadyClock::now();
+  const PhaseCpuMeter cpu;
   bool interrupted = false;
   AdaptivePixels adaptive(run_->width, run_->height, spp_, ctx_.options.adaptive, firstSample);
   FinalPass pass(*run_, aovs_, film, adaptive);
@@ -195,6 +196,7 @@ bool RcachePasses::addPass(Film& film, int firstSample) {
   pass.mergeBands();
   if (adaptiveFilm) film.add(*adaptiveFilm);
   totals_.add(pass, adaptive);
+  totals_.cpu.add(cpu.elapsed());
   finalS_ += secondsSince(passStart);
   return !interrupted;
 }

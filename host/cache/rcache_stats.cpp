@@ -36,6 +36,8 @@ void reportTimes(const RcacheRun& run, const RcacheReport& r, RenderStats& stats
   stats.set("time_interpolation_s", es.interpolation_s);
   stats.set("time_dot_s", es.dot_s);
   stats.set("time_adaptive_check_s", es.adaptive_s);
+  stats.setPhaseCpu("cache_fill", r.fill.cpu);
+  stats.setPhaseCpu("final_pass", r.passes.cpu);
 }
 
 void reportRecords(const RcacheRun& run, const RcacheReport& r, RenderStats& stats) {

@@ -13,6 +13,7 @@ namespace rc {
 struct FinalPassTotals {
   uint64_t cameraRays = 0, nanSamples = 0, directLightOnly = 0, lobeSplitSamples = 0, samples = 0, pixelsAboveSpp = 0;
   int bandsReshaded = 0, maxPixelSamples = 0;
+  PhaseCpu cpu;
   void add(const FinalPass& pass, const AdaptivePixels& adaptive);
 };
 

@@ -17,6 +17,8 @@ namespace rc::cl {
 
 namespace {
 
+std::atomic<bool> gPlatformsQueried{false};
+
 std::string platformString(cl_platform_id p, cl_platform_info what) {
   size_t n = 0;
   RC_CL_CHECK(clGetPlatformInfo(p, what, 0, nullptr, &n));
@@ -105,7 +107,14 @@ std::string DeviceInfo::label() const {
          std::to_string(deviceIndex) + ")";
 }
 
+bool limitCpuDeviceThreads(int threads) {
+  if (gPlatformsQueried) return false;
+  if (threads > 0) setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(threads).c_str(), /*overwrite=*/0);
+  return true;
+}
+
 std::vector<DeviceInfo> enumerateDevices() {
+  gPlatformsQueried = true;
   cl_uint np = 0;
   cl_int err = clGetPlatformIDs(0, nullptr, &np);
   if (err == CL_PLATFORM_NOT_FOUND_KHR || np == 0) return {};

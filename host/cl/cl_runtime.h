@@ -24,6 +24,13 @@ struct DeviceInfo {
   std::string label() const;  // "pthread-... (Portable Computing Language, platform 0 device 0)"
 };
 
+// `-t N` means N threads of work in all (docs/ARCHITECTURE.md §Threads), kernels included: PoCL's CPU
+// device runs kernels on its own pool of threads, sized once, when the platform is first created,
+// from POCL_MAX_PTHREAD_COUNT (PoCL 3.1's pthread device honours it; the device then reports that
+// many compute units). Sets it to `threads` unless the user set it already; a GPU is unaffected.
+// Returns false, changing nothing, when the platforms were already queried (too late to apply).
+bool limitCpuDeviceThreads(int threads);
+
 // All devices of all platforms. No platform at all (CL_PLATFORM_NOT_FOUND_KHR or 0 platforms)
 // returns an empty list; other API failures throw.
 std::vector<DeviceInfo> enumerateDevices();

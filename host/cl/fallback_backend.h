@@ -18,6 +18,7 @@ class FallbackBackend : public ShBackend {
 
   std::string deviceName() const override;
   bool isOpenCl() const override { return !fellBack_ && primary_->isOpenCl(); }
+  int kernelThreads() const override { return fellBack_ ? scalar_->kernelThreads() : primary_->kernelThreads(); }
   bool fellBack() const { return fellBack_; }
 
   void project(const ProjectBatch& batch, ProjectResult& out) override;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
+#include <vector>
 
 #include "cl/device_tuning.h"
 #include "cl/rotation_tables.h"
@@ -60,6 +62,8 @@ OpenClBackend::~OpenClBackend() = default;
 std::string OpenClBackend::deviceName() const {
   return "OpenCL: " + ctx_->info().name + " (" + ctx_->info().platformName + ")";
 }
+
+int OpenClBackend::kernelThreads() const { return ctx_->info().type == "CPU" ? ctx_->info().computeUnits : 0; }
 
 void OpenClBackend::prepare(int order) {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -123,19 +127,42 @@ class OpenClBackend::Call {
   cl::Buffer unused() const { return cl::Buffer(context, CL_MEM_READ_WRITE, 4); }
   cl::Buffer scratch(size_t bytes) const { return cl::Buffer(context, CL_MEM_READ_WRITE, bytes); }
 
-  template <class T>
-  void readBack(const cl::Buffer& b, T* dst, size_t count) const {
-    if (count == 0) return;
-    if (zeroCopy_) {  // map/unmap makes the device's writes visible in the wrapped host array
-      cl_int err = CL_SUCCESS;
-      void* p = clEnqueueMapBuffer(queue, b.get(), CL_TRUE, CL_MAP_READ, 0, count * sizeof(T), 0, nullptr, nullptr, &err);
-      RC_CL_CHECK_ERR(err, "clEnqueueMapBuffer(queue, buffer, CL_TRUE, CL_MAP_READ, ...)");
-      if (p != static_cast<void*>(dst)) std::memcpy(dst, p, count * sizeof(T));
-      RC_CL_CHECK(clEnqueueUnmapMemObject(queue, b.get(), p, 0, nullptr, nullptr));
+  // One output buffer to bring back into the host array `dst` (count items of T).
+  struct Read {
+    const cl::Buffer* buffer;
+    void* dst;
+    size_t bytes;
+    template <class T>
+    Read(const cl::Buffer& b, T* d, size_t count) : buffer(&b), dst(d), bytes(count * sizeof(T)) {}
+  };
+  // Brings several outputs back with one wait for the device (and one for the unmaps), not one per
+  // buffer: each wait is a sleep of the calling thread and a wake-up of the device's threads.
+  void readBack(std::initializer_list<Read> reads) const {
+    if (!zeroCopy_) {
+      for (const Read& r : reads)
+        if (r.bytes)
+          RC_CL_CHECK(clEnqueueReadBuffer(queue, r.buffer->get(), CL_FALSE, 0, r.bytes, r.dst, 0, nullptr, nullptr));
       RC_CL_CHECK(clFinish(queue));
       return;
     }
-    RC_CL_CHECK(clEnqueueReadBuffer(queue, b.get(), CL_TRUE, 0, count * sizeof(T), dst, 0, nullptr, nullptr));
+    // map/unmap makes the device's writes visible in the wrapped host arrays
+    std::vector<void*> mapped;
+    for (const Read& r : reads) {
+      if (!r.bytes) continue;
+      cl_int err = CL_SUCCESS;
+      mapped.push_back(clEnqueueMapBuffer(queue, r.buffer->get(), CL_FALSE, CL_MAP_READ, 0, r.bytes, 0, nullptr, nullptr,
+                                          &err));
+      RC_CL_CHECK_ERR(err, "clEnqueueMapBuffer(queue, buffer, CL_FALSE, CL_MAP_READ, ...)");
+    }
+    RC_CL_CHECK(clFinish(queue));
+    size_t m = 0;
+    for (const Read& r : reads) {
+      if (!r.bytes) continue;
+      void* p = mapped[m++];
+      if (p != r.dst) std::memcpy(r.dst, p, r.bytes);
+      RC_CL_CHECK(clEnqueueUnmapMemObject(queue, r.buffer->get(), p, 0, nullptr, nullptr));
+    }
+    RC_CL_CHECK(clFinish(queue));
   }
 
   // Explicit work-group sizes: left to itself PoCL picks 4096-item groups, and the kernels'
@@ -312,12 +339,11 @@ void OpenClBackend::projectChunk(Call& call, const ProjectBatch& b, long long b0
   st.finish.args(static_cast<cl_int>(cnt), static_cast<cl_int>(rows), static_cast<float>(2.0 * kPiD / double(S)), phi, C,
                  lam, gT, gB);
   call.launch(st.finish, rows, cnt, rows);
-  call.readBack(lam, out.lambda.data() + outFirst, outCount);
-  if (b.gradients) {
-    call.readBack(gT, out.gradT.data() + outFirst, outCount);
-    call.readBack(gB, out.gradB.data() + outFirst, outCount);
-  }
-  call.readBack(dropped, out.dropped.data() + b0, cnt);
+  const size_t gradCount = b.gradients ? outCount : 0;  // no gradients: empty arrays, nothing read
+  call.readBack({{lam, out.lambda.data() + outFirst, outCount},
+                 {gT, b.gradients ? out.gradT.data() + outFirst : nullptr, gradCount},
+                 {gB, b.gradients ? out.gradB.data() + outFirst : nullptr, gradCount},
+                 {dropped, out.dropped.data() + b0, static_cast<size_t>(cnt)}});
 }
 
 void OpenClBackend::project(const ProjectBatch& b, ProjectResult& out) {
@@ -361,7 +387,7 @@ void OpenClBackend::rotate(const RotateBatch& b, std::vector<float>& out) {
       cl::Buffer o = call.output(out.data() + 3 * n2 * b0, 3 * n2 * cnt);
       st.rotate.args(static_cast<cl_int>(cnt), R, in, o, st.x90Rows, st.x90Entries);
       call.launch(st.rotate, packs(cnt), 1, kPacksPerGroup);
-      call.readBack(o, out.data() + 3 * n2 * b0, 3 * n2 * cnt);
+      call.readBack({{o, out.data() + 3 * n2 * b0, static_cast<size_t>(3 * n2 * cnt)}});
     }
   }
   times_.rotate_s += secondsSince(t0);
@@ -401,7 +427,7 @@ void OpenClBackend::interpolate(const InterpolateBatch& b, std::vector<float>& o
         st.interpRecord.args(points, gradients, lam, gT, gB, rf, pf, ob, eb, st.x90Rows, st.x90Entries, o);
         call.launch(st.interpRecord, cnt);
       }
-      call.readBack(o, out.data() + 3 * n2 * p0, 3 * n2 * cnt);
+      call.readBack({{o, out.data() + 3 * n2 * p0, static_cast<size_t>(3 * n2 * cnt)}});
     }
   }
   times_.interpolate_s += secondsSince(t0);
@@ -427,7 +453,7 @@ void OpenClBackend::brdfDot(const BrdfDotBatch& b, std::vector<float>& out) {
       cl::Buffer o = call.output(out.data() + 3 * p0, 3 * cnt);
       st.brdf.args(static_cast<cl_int>(cnt), lam, wo, mat, tabs, static_cast<cl_int>(b.tables.size()), data, o);
       call.launch(st.brdf, cnt);
-      call.readBack(o, out.data() + 3 * p0, 3 * cnt);
+      call.readBack({{o, out.data() + 3 * p0, static_cast<size_t>(3 * cnt)}});
     }
   }
   times_.brdfDot_s += secondsSince(t0);

@@ -20,6 +20,7 @@ class OpenClBackend final : public ShBackend {
 
   std::string deviceName() const override;
   bool isOpenCl() const override { return true; }
+  int kernelThreads() const override;
   void project(const ProjectBatch& batch, ProjectResult& out) override;
   void rotate(const RotateBatch& batch, std::vector<float>& out) override;
   void interpolate(const InterpolateBatch& batch, std::vector<float>& out) override;

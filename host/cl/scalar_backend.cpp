@@ -23,6 +23,7 @@ class ScalarBackend final : public ShBackend {
     return "cpu (scalar, " + std::to_string(threadCount()) + " threads)";
   }
   bool isOpenCl() const override { return false; }
+  int kernelThreads() const override { return threadCount(); }
 
   void project(const ProjectBatch& b, ProjectResult& out) override {
     const auto t0 = SteadyClock::now();

@@ -22,6 +22,9 @@ class ShBackend {
   virtual ~ShBackend() = default;
   virtual std::string deviceName() const = 0;  // e.g. "cpu (scalar, 2 threads)" or "OpenCL: pthread-... (PoCL)"
   virtual bool isOpenCl() const = 0;
+  // Host threads the kernels run on: the scalar backend's parallelFor threads, a CPU OpenCL
+  // device's compute units (PoCL runs one thread per unit), 0 for a GPU (not host threads).
+  virtual int kernelThreads() const = 0;
 
   virtual void project(const ProjectBatch& batch, ProjectResult& out) = 0;
   virtual void rotate(const RotateBatch& batch, std::vector<float>& out) = 0;

@@ -8,6 +8,8 @@
 #include <thread>
 #include <vector>
 
+#include "core/cpu_clock.h"
+
 namespace rc {
 
 namespace {
@@ -17,6 +19,10 @@ int gThreads = 0;
 // runs serially on that thread (the outer loop already keeps every thread busy, and waiting for
 // pool workers that are themselves inside the outer loop would deadlock).
 thread_local bool tInsideLoop = false;
+// The loops this thread started (loopAccountOfThisThread); set while one is being timed, so a loop
+// nested in its body is not counted twice.
+thread_local LoopAccount tLoopAccount;
+thread_local bool tTimingLoop = false;
 
 // Persistent workers: a render makes thousands of parallelFor calls (per batch of records, per
 // band), and creating and joining threads for each cost ≈ 5 % of the run time.
@@ -35,9 +41,12 @@ class WorkerPool {
   }
   int helpers() const { return static_cast<int>(workers_.size()); }
 
-  // Runs `work` on every worker and on the calling thread; returns when all have returned. A
-  // second caller while the pool is busy (two loops started from different threads) runs its
-  // work alone on its own thread.
+  // Runs `work` on the calling thread and on every worker that wakes in time; returns when all
+  // that joined have returned. `work` must return only when the loop has no chunk left to hand
+  // out: then the job is withdrawn, so the caller waits for the workers still running a chunk but
+  // never for a worker that has yet to wake (a scheduler wake-up for nothing, twice per loop: the
+  // worker's, then the caller's). A second caller while the pool is busy (two loops started from
+  // different threads) runs its work alone on its own thread.
   void run(const std::function<void()>& work) {
     std::unique_lock<std::mutex> owner(runMutex_, std::try_to_lock);
     if (!owner.owns_lock()) {
@@ -47,14 +56,13 @@ class WorkerPool {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       job_ = &work;
-      busy_ = static_cast<int>(workers_.size());
       ++generation_;
     }
     wake_.notify_all();
     work();
     std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [this] { return busy_ == 0; });
     job_ = nullptr;
+    done_.wait(lock, [this] { return running_ == 0; });
   }
 
  private:
@@ -68,10 +76,12 @@ class WorkerPool {
         if (stop_) return;
         seen = generation_;
         job = job_;
+        if (!job) continue;  // withdrawn: the loop ended before this worker woke
+        ++running_;
       }
       (*job)();
       std::lock_guard<std::mutex> lock(mutex_);
-      if (--busy_ == 0) done_.notify_one();
+      if (--running_ == 0) done_.notify_one();
     }
   }
 
@@ -81,7 +91,7 @@ class WorkerPool {
   std::vector<std::thread> workers_;
   const std::function<void()>* job_ = nullptr;
   uint64_t generation_ = 0;
-  int busy_ = 0;
+  int running_ = 0;  // workers inside the current job
   bool stop_ = false;
 };
 
@@ -106,6 +116,8 @@ int threadCount() {
   return hw ? static_cast<int>(hw) : 1;
 }
 
+LoopAccount loopAccountOfThisThread() { return tLoopAccount; }
+
 void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t)>& body) {
   if (n == 0) return;
   if (chunk == 0) chunk = 1;
@@ -127,6 +139,9 @@ void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t
       }
     }
   };
+  const bool timed = chunks > 1 && !tInsideLoop && !tTimingLoop;
+  const double cpuStart = timed ? threadCpuSeconds() : 0.0;
+  tTimingLoop |= timed;
   if (chunks <= 1 || threads <= 1 || tInsideLoop) {
     work();
   } else {
@@ -136,6 +151,13 @@ void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t
       tInsideLoop = false;
     };
     poolFor(threads)->run(job);
+  }
+  if (timed) {
+    tTimingLoop = false;
+    const double cpu = threadCpuSeconds() - cpuStart;
+    tLoopAccount.cpuS += cpu;
+    tLoopAccount.spanAt2S += cpu * double((chunks + 1) / 2) / double(chunks);
+    ++tLoopAccount.loops;
   }
   if (failure) std::rethrow_exception(failure);
 }

@@ -25,6 +25,8 @@ struct RenderOptions {
   std::vector<std::string> aovs;  // requested AOV names (integrator-specific)
 };
 
+struct PhaseCpu;
+
 // Named statistics, printed in insertion order and written to --stats JSON.
 // Numbers are doubles; text values (device, technique) strings; nested lists are JSON snippets.
 struct RenderStats {
@@ -34,6 +36,9 @@ struct RenderStats {
   void set(const std::string& key, double value);
   void setText(const std::string& key, const std::string& value);
   void setJson(const std::string& key, const std::string& rawJson);
+  // A phase's CPU seconds by where they ran (core/phase_cpu.h): cpu_<phase>_serial_s, _loops_s,
+  // _loops_span_at_2_s, _other_threads_s, <phase>_parallel_loops and <phase>_control_thread_sleeps.
+  void setPhaseCpu(const std::string& phase, const PhaseCpu& cpu);
   double get(const std::string& key, double fallback = 0.0) const;
   std::string text(const std::string& key) const;  // "" when not set
 };

@@ -29,4 +29,18 @@ for scene in cornell_glossy corridor; do
       || fail "${scene}_cache_t1_t$t" "cache files differ"
   done
 done
+# -t N is N threads in all: a CPU OpenCL device (PoCL) runs its kernels on N threads too, and says
+# so in the statistics; the kernels' results do not depend on it. Skipped without an OpenCL CPU
+# device unless RC_REQUIRE_OPENCL=1 (CI).
+if "$RC" devices 2>/dev/null | grep -q "\[CPU"; then
+  for t in 1 2; do
+    "$RC" "$SCENES/cornell_glossy.xml" --integrator rcache --device opencl -D fallback=false -D res=24 -D rays=96 \
+      --spp 2 --seed 11 -t $t --quiet -o "$TMP/cl_t$t.exr" --stats "$TMP/cl_t$t.json" || fail "opencl_render_t$t" "exit $?"
+    python3 -c "import json,sys; s=json.load(open(sys.argv[1])); sys.exit(0 if s.get('threads')==s.get('kernel_threads')==$t else 1)" \
+      "$TMP/cl_t$t.json" && pass "opencl_kernel_threads_t$t" || fail "opencl_kernel_threads_t$t" "$(grep threads "$TMP/cl_t$t.json")"
+  done
+  same_image opencl_image_t1_t2 "$TMP/cl_t1.exr" "$TMP/cl_t2.exr"
+elif [ "${RC_REQUIRE_OPENCL:-0}" = 1 ]; then
+  fail opencl_kernel_threads "no OpenCL CPU device (RC_REQUIRE_OPENCL=1)"
+fi
 [ "$fails" -eq 0 ]

@@ -14,6 +14,7 @@
 #include "core/math.h"
 #include "core/parallel.h"
 #include "core/parallel_sort.h"
+#include "core/phase_cpu.h"
 #include "core/properties.h"
 #include "core/rng.h"
 
@@ -144,6 +145,55 @@ TEST(Parallel, CoversRangeOnceAndRethrows) {
                  if (b == 50) throw Error("boom");
                }),
                Error);
+  setThreadCount(0);
+}
+
+// Loops shorter than a worker's wake-up: the caller takes every chunk and withdraws the job before
+// the worker wakes, so a worker joins late or not at all; each index must still run once, and a
+// worker waking late must not touch a loop that has returned (the sanitizer pass checks that).
+TEST(Parallel, ShortLoopsCoverEveryIndexOnceWhateverJoins) {
+  for (int threads : {2, 3}) {
+    setThreadCount(threads);
+    for (int loop = 0; loop < 3000; ++loop) {
+      std::vector<int> hits(3, 0);
+      parallelFor(hits.size(), 1, [&](size_t b, size_t e) {
+        for (size_t i = b; i < e; ++i) hits[i]++;
+      });
+      ASSERT_EQ(hits, std::vector<int>(3, 1)) << threads << " threads, loop " << loop;
+    }
+  }
+  setThreadCount(0);
+}
+
+namespace {
+// Burns `seconds` of the calling thread's CPU time.
+void burnCpu(double seconds) {
+  const double end = threadCpuSeconds() + seconds;
+  volatile double x = 0;
+  while (threadCpuSeconds() < end) x = x + 1.0;
+}
+}  // namespace
+
+TEST(Parallel, PhaseCpuTellsSerialWorkFromLoopsAtOneThread) {
+  setThreadCount(1);
+  const PhaseCpuMeter meter;
+  burnCpu(0.02);  // serial
+  parallelFor(4, 1, [](size_t, size_t) {
+    burnCpu(0.01);
+    parallelFor(3, 1, [](size_t, size_t) {});  // nested: part of the outer loop, not a loop of its own
+  });
+  parallelFor(1, 1, [](size_t, size_t) { burnCpu(0.01); });  // one chunk: nothing to share, serial
+  const PhaseCpu cpu = meter.elapsed();
+  EXPECT_EQ(cpu.loops, 1u);
+  EXPECT_GE(cpu.loopsS, 0.04);
+  EXPECT_LT(cpu.loopsS, 0.06);
+  EXPECT_DOUBLE_EQ(cpu.loopsSpanAt2S, cpu.loopsS / 2);  // 4 chunks: 2 on each of 2 threads
+  const PhaseCpuMeter odd;
+  parallelFor(3, 1, [](size_t, size_t) { burnCpu(0.01); });
+  EXPECT_NEAR(odd.elapsed().loopsSpanAt2S, odd.elapsed().loopsS * 2 / 3, 1e-9);  // 3 chunks: 2 on one thread
+  EXPECT_GE(cpu.serialS, 0.03);
+  EXPECT_LT(cpu.serialS, cpu.loopsS);
+  EXPECT_LT(cpu.otherThreadsS, 0.01);  // no other thread worked
   setThreadCount(0);
 }
 

@@ -8,6 +8,7 @@
 #include "cl/fallback_backend.h"
 #include "cl/kernel_cases.h"
 #include "core/error.h"
+#include "core/parallel.h"
 #include "sh/reference.h"
 
 namespace rc {
@@ -19,6 +20,7 @@ class FlakyBackend : public ShBackend {
   explicit FlakyBackend(int okCalls) : ok_(okCalls) {}
   std::string deviceName() const override { return "flaky test device"; }
   bool isOpenCl() const override { return true; }
+  int kernelThreads() const override { return 0; }
   void project(const ProjectBatch& b, ProjectResult& out) override { step(); ref::project(b, out); }
   void rotate(const RotateBatch& b, std::vector<float>& out) override { step(); ref::rotate(b, out); }
   void interpolate(const InterpolateBatch& b, std::vector<float>& out) override { step(); ref::interpolate(b, out); }
@@ -38,6 +40,7 @@ TEST(FallbackBackend, DeviceFailureMidRenderFinishesOnScalarWithOneNotice) {
   std::vector<std::string> notices;
   FallbackBackend backend(std::move(flaky), [&](const std::string& n) { notices.push_back(n); });
   EXPECT_TRUE(backend.isOpenCl());
+  EXPECT_EQ(backend.kernelThreads(), 0);  // the stand-in device's own threads are not host threads
   for (int call = 0; call < 5; ++call) {
     RotateBatch b = cases::makeRotateBatch(6, 17, 100u + call, true);
     std::vector<float> ref, got;
@@ -50,6 +53,7 @@ TEST(FallbackBackend, DeviceFailureMidRenderFinishesOnScalarWithOneNotice) {
   EXPECT_NE(notices[0].find("CL_OUT_OF_RESOURCES"), std::string::npos);
   EXPECT_TRUE(backend.fellBack());
   EXPECT_FALSE(backend.isOpenCl());
+  EXPECT_EQ(backend.kernelThreads(), threadCount());  // the scalar path runs on the parallelFor threads
   EXPECT_NE(backend.deviceName().find("after flaky test device failed"), std::string::npos);
   EXPECT_GT(backend.times().rotate_s, 0.0);  // the time of all five calls, device and scalar, is counted
 }
