@@ -40,6 +40,7 @@ class MaskBsdf final : public Bsdf {
     if (opacity_ < 1.0f || opacityTexture_) l |= kLobeDelta | kLobeTransmission;
     return l;
   }
+  Color nullTransmission() const override { return Color(1.0f - opacity_); }
   float glossyAlpha() const override { return nested_->glossyAlpha(); }
   bool isotropic() const override { return nested_->isotropic(); }
   std::string parameterKey() const override {

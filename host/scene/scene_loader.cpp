@@ -190,6 +190,10 @@ void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     buildTexture(file, node);  // registers its id for <ref name="..." id="..."/> in BSDFs
   } else if (tag == "sampler") {
     buildTopLevelSampler(file, node);
+  } else if (tag == "medium") {
+    buildMedium(file, node);  // registers its id for the shapes' and sensor's <ref>s
+  } else if (tag == "volume") {
+    buildVolume(file, node);
   } else if (tag == "film" || tag == "rfilter") {
     throw LocatedError(whereOf(*file, node) + ": <" + tag + "> must be inside " +
                        (tag == "rfilter" ? "<film>" : "<sensor>"));
