@@ -51,9 +51,10 @@ ServedShare servedShare(const RcacheRun& run, const ShadePoint& sp, Rng& rng) {
 
 FallbackDecision decideFallback(const RcacheRun& run) {
   FallbackDecision d;
-  // Records hold surface radiance without media on the way, so a scene with media is always path
-  // traced by the volumetric estimator (render/volpath.h), whatever the options ask.
-  if (sceneUsesMedia(run.ctx.scene)) {
+  // Records hold surface radiance without media on the way, so a scene whose media the file's
+  // integrator follows is always path traced by the volumetric estimator (render/volpath.h),
+  // whatever the options ask.
+  if (followsMedia(run.ctx.scene, "rcache")) {
     d.pathTrace = true;
     d.reason = "path traced: the scene has participating media, which the cache does not carry";
     return d;

@@ -82,7 +82,7 @@ namespace {
 class PathPasses final : public PassRender {
  public:
   PathPasses(const RenderContext& ctx, const IntegratorSettings& settings, PathCore core, BatchQuery query)
-      : ctx_(ctx), settings_(settings), core_(core), query_(query), media_(sceneUsesMedia(ctx.scene)),
+      : ctx_(ctx), settings_(settings), core_(core), query_(query), media_(followsMedia(ctx.scene, settings.type)),
         rays0_(ctx.accel.raysTraced()), camera_(ctx.scene.camera, ctx.scene.film) {
     loop_.spp = ctx.options.spp > 0 ? ctx.options.spp : ctx.scene.sampler.sampleCount;
     if (loop_.spp <= 0) throw Error("sampler: sample_count must be positive");
@@ -153,7 +153,7 @@ class PathPasses final : public PassRender {
   const IntegratorSettings& settings_;
   const PathCore core_;
   const BatchQuery query_;
-  const bool media_;  // the scene has participating media
+  const bool media_;  // the scene's media are followed (followsMedia)
   const SteadyClock::time_point start_ = SteadyClock::now();
   const uint64_t rays0_;
   const CameraModel camera_;

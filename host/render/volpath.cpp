@@ -77,6 +77,11 @@ bool sceneUsesMedia(const Scene& scene) {
   return false;
 }
 
+bool followsMedia(const Scene& scene, const std::string& integrator) {
+  const std::string& estimator = integrator == "rcache" ? scene.integrator.type : integrator;
+  return (estimator == "volpath" || estimator == "volpathmis") && sceneUsesMedia(scene);
+}
+
 Color shadowTransmittance(const RenderContext& ctx, Ray ray, int medium) {
   const Scene& scene = ctx.scene;
   Color tr(1.0f);

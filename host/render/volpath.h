@@ -1,8 +1,9 @@
 #pragma once
 // Volumetric path tracing with Mitsuba 3 `volpath` semantics (src/integrators/volpath.cpp), for
 // scenes whose shapes or sensor hold participating media (scene/medium.h). The path integrator
-// renders such scenes with this scalar estimator instead of its wavefront core (its statistics
-// say so: `path_core`); scenes without media never reach it.
+// renders such scenes with this scalar estimator instead of its wavefront core where the
+// integrator follows media (followsMedia; its statistics say so: `path_core`); scenes without
+// media never reach it.
 //
 // Per path, as Mitsuba: Russian roulette at the top of every vertex once depth > rr_depth
 // (q = min(max β · η², 0.95)); depth counts medium scattering and non-null surface scattering,
@@ -19,6 +20,8 @@
 // the channel at every flight and weights by the mean density over the channels (the same
 // expectation; no extreme weights when sigma_t differs between channels), and shadow rays take
 // the transmittance in closed form where Mitsuba draws it.
+#include <string>
+
 #include "core/rng.h"
 #include "geometry/accel.h"
 #include "render/integrator.h"
@@ -27,6 +30,11 @@ namespace rc {
 
 // True when a shape or the sensor refers to a medium (unreferenced <medium>s change nothing).
 bool sceneUsesMedia(const Scene& scene);
+
+// Whether a render with `integrator` follows the scene's media: Mitsuba's volpath and volpathmis
+// do; its path and direct render surfaces only (a medium's null boundary is then just invisible).
+// rcache renders what the file's integrator would (Scene::integrator.type).
+bool followsMedia(const Scene& scene, const std::string& integrator);
 
 // Radiance along one camera ray (one path sample).
 Color volPathRadiance(const RenderContext& ctx, const IntegratorSettings& settings, const Ray& cameraRay, Rng& rng);

@@ -135,6 +135,22 @@ TEST(Volpath, CameraMediumAttenuatesEverything) {
   expectNear(estimate(w, IntegratorSettings(), rayAt({0, 0, 0}, {0, 0, 1}), 2000, 3), Color(1.0f, 0.0f, 1.0f), "fog");
 }
 
+// Mitsuba's volpath and volpathmis follow media, its path and direct render surfaces only; rcache
+// renders what the file's integrator would.
+TEST(Volpath, OnlyVolumetricIntegratorsFollowMedia) {
+  Scene s = mediumSphere(homogeneous(Color(1.0f), Color(0.5f)), nullBsdf());
+  s.integrator.type = "volpath";
+  EXPECT_TRUE(followsMedia(s, "volpath"));
+  EXPECT_TRUE(followsMedia(s, "volpathmis"));
+  EXPECT_TRUE(followsMedia(s, "rcache"));
+  EXPECT_FALSE(followsMedia(s, "path"));
+  EXPECT_FALSE(followsMedia(s, "direct"));
+  s.integrator.type = "path";
+  EXPECT_FALSE(followsMedia(s, "rcache"));
+  s.spheres[0].media = MediumInterface();  // the medium defined but not referred to
+  EXPECT_FALSE(followsMedia(s, "volpath"));
+}
+
 TEST(Volpath, MaxDepthCountsScatteringNotNullCrossings) {
   // max_depth 1: only what the camera ray finds unscattered — the sky through the null boundary
   // (which does not count as a vertex), attenuated along the chord of 2.
