@@ -50,12 +50,7 @@ Scene mediumSphere(const Medium& medium, BsdfPtr boundary) {
   return s;
 }
 
-Ray rayAt(const Vec3& o, const Vec3& target) {
-  Ray r;
-  r.o = o;
-  r.d = glm::normalize(target - o);
-  return r;
-}
+using test::rayAt;
 
 struct Estimate {
   Color mean{0.0f}, stderr_{0.0f};
