@@ -94,6 +94,27 @@ TEST(Volpath, AbsorbingSphereTransmitsBeersLaw) {
   EXPECT_EQ(shadowTransmittance(opaque.context(), rayAt({0, 0, 5}, {0, 0, 0}), -1), Color(0.0f));
 }
 
+// Shadow rays pass null-like surfaces by Mitsuba's eval_null_transmission: a mask lets 1 − opacity
+// through, two masks the product, and an opaque surface behind stops everything.
+TEST(Volpath, ShadowRaysPassMasksByTheirOpenShare) {
+  Properties props;
+  props.pluginType = "mask";
+  props.set("opacity", test::floatProp(0.3f));
+  Scene s;
+  const int mask = test::addBsdf(s, createBsdf(props, {test::diffuse(Color(0.5f))}));
+  s.meshes.push_back(test::quad({-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}, mask));
+  s.meshes.push_back(test::quad({-1, -1, 2}, {1, -1, 2}, {1, 1, 2}, {-1, 1, 2}, mask));
+  s.meshes.push_back(test::quad({-1, -1, 4}, {1, -1, 4}, {1, 1, 4}, {-1, 1, 4}, test::addBsdf(s, test::diffuse(Color(0.5f)))));
+  const test::World w(std::move(s));
+  Ray ray = rayAt({0, 0, 0}, {0, 0, 1});
+  ray.tMax = 1.5f;
+  EXPECT_NEAR(shadowTransmittance(w.context(), ray, -1).g, 0.7f, 1e-6f);
+  ray.tMax = 3.0f;
+  EXPECT_NEAR(shadowTransmittance(w.context(), ray, -1).g, 0.49f, 1e-6f);
+  ray.tMax = 5.0f;
+  EXPECT_EQ(shadowTransmittance(w.context(), ray, -1), Color(0.0f));
+}
+
 // A lossless medium (albedo 1) inside a lossless boundary under a uniform sky of radiance 1 sees
 // radiance 1 from everywhere: scattering, next-event estimation with transmittance, MIS, the
 // boundary's refraction and Russian roulette (unbounded max_depth) must all balance.
