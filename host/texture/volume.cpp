@@ -38,6 +38,14 @@ int wrapIndex(int i, int n, TextureWrap wrap) {
   return 0;
 }
 
+// floor(x) as an int for any float: far points (and NaN) are held at ±2^30 voxels, where a float has
+// no fraction left to interpolate anyway, so the conversion never overflows.
+int voxelFloor(float x) {
+  constexpr float kLimit = 1073741824.0f;
+  const float held = x > -kLimit ? (x < kLimit ? x : kLimit) : -kLimit;
+  return static_cast<int>(std::floor(held));
+}
+
 class GridVolume final : public Volume {
  public:
   GridVolume(GridVolumeData data, VolumeFilter filter, TextureWrap wrap, const Mat4& toLocal)
@@ -59,7 +67,7 @@ class GridVolume final : public Volume {
     for (int a = 0; a < 3; ++a) n[a] = static_cast<int>(data_.size[a]);
     if (filter_ == VolumeFilter::Nearest) {
       int i[3];
-      for (int a = 0; a < 3; ++a) i[a] = wrapIndex(static_cast<int>(std::floor(p[a] * n[a])), n[a], wrap_);
+      for (int a = 0; a < 3; ++a) i[a] = wrapIndex(voxelFloor(p[a] * n[a]), n[a], wrap_);
       return at(i[0], i[1], i[2]);
     }
     // Trilinear between the voxel centres around p·n − ½.
@@ -67,10 +75,10 @@ class GridVolume final : public Volume {
     float f[3];
     for (int a = 0; a < 3; ++a) {
       const float x = p[a] * n[a] - 0.5f;
-      const float fl = std::floor(x);
-      f[a] = x - fl;
-      i0[a] = wrapIndex(static_cast<int>(fl), n[a], wrap_);
-      i1[a] = wrapIndex(static_cast<int>(fl) + 1, n[a], wrap_);
+      const int i = voxelFloor(x);
+      f[a] = std::isfinite(x) ? glm::clamp(x - static_cast<float>(i), 0.0f, 1.0f) : 0.0f;
+      i0[a] = wrapIndex(i, n[a], wrap_);
+      i1[a] = wrapIndex(i + 1, n[a], wrap_);
     }
     Color c(0.0f);
     for (int corner = 0; corner < 8; ++corner) {

@@ -97,6 +97,12 @@ TEST(MediumLoad, GridVolumeTrilinearNearestAndWrapModes) {
   // x = 0.1·2 − ½ = −0.3: between voxel −1 (= 1 when repeating) and 0, weight 0.3 on the first.
   EXPECT_NEAR(repeat->eval({0.1f, 0.25f, 0.25f}).r, 0.3f / 7, 1e-6f);
   EXPECT_NEAR(repeat->eval({1.1f, 0.25f, 0.25f}).r, 0.3f / 7, 1e-6f);
+  // Far points (beyond int range in voxels) stay inside the grid's values, without overflow.
+  for (const VolumePtr& vol : {clamp, repeat}) {
+    const float far = vol->eval({1e30f, -1e30f, 5e9f}).r;
+    EXPECT_GE(far, 0.0f);
+    EXPECT_LE(far, 1.0f);
+  }
   const VolumePtr mirror = albedoOf(R"(<string name="wrap_mode" value="mirror"/>)");
   EXPECT_NEAR(mirror->eval({0.1f, 0.25f, 0.25f}).r, 0.0f, 1e-6f);            // voxel −1 mirrors to 0
   EXPECT_NEAR(mirror->eval({1.1f, 0.25f, 0.25f}).r, 1.0f / 7, 1e-6f);        // voxels 2, 1 mirror to 1, 1
