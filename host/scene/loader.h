@@ -50,6 +50,9 @@ class Loader {
   // Registers e's id (an element without one gets a placeholder entry nobody can refer to).
   Named& registerId(const Element& e, Kind kind, BsdfPtr bsdf = nullptr, TexturePtr texture = nullptr);
   const Named& resolveRef(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref);
+  // resolveRef, refusing an object of another kind: "id 'x' (defined at …) is not a <what>".
+  const Named& resolveRefTo(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref, Kind kind,
+                            const std::string& what);
 
   BsdfPtr buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
   // Mitsuba 3's material for a shape without one: diffuse with reflectance 0.5, or 0 on the shape of

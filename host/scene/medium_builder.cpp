@@ -48,11 +48,7 @@ int Loader::buildMedium(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
       if (volumes.count(name)) throw LocatedError(whereOf(*file, child) + ": '" + name + "' is given twice");
       volumes[name] = buildVolume(file, child);
     } else if (tag == "ref" && (name == "albedo" || name == "sigma_t")) {
-      const Named& n = resolveRef(file, child);
-      if (n.kind != Kind::Volume || !n.volume)
-        throw LocatedError(whereOf(*file, child) + ": id '" + std::string(child.attribute("id").value()) +
-                           "' (defined at " + n.where + ") is not a volume");
-      volumes[name] = n.volume;
+      volumes[name] = resolveRefTo(file, child, Kind::Volume, "volume").volume;
     } else {
       unexpectedChild(e, child);
     }
@@ -83,11 +79,7 @@ int Loader::buildMedium(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
 
 int Loader::mediumOf(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& child) {
   if (std::string(child.name()) == "medium") return buildMedium(file, child);
-  const Named& n = resolveRef(file, child);
-  if (n.kind != Kind::Medium)
-    throw LocatedError(whereOf(*file, child) + ": id '" + std::string(child.attribute("id").value()) + "' (defined at " +
-                       n.where + ") is not a medium");
-  return n.medium;
+  return resolveRefTo(file, child, Kind::Medium, "medium").medium;
 }
 
 }  // namespace rc

@@ -290,4 +290,13 @@ const Loader::Named& Loader::resolveRef(const std::shared_ptr<XmlFile>& file, co
   return it->second;
 }
 
+const Loader::Named& Loader::resolveRefTo(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref, Kind kind,
+                                          const std::string& what) {
+  const Named& n = resolveRef(file, ref);
+  if (n.kind != kind)
+    throw LocatedError(whereOf(*file, ref) + ": id '" + std::string(ref.attribute("id").value()) + "' (defined at " +
+                       n.where + ") is not a " + what);
+  return n;
+}
+
 }  // namespace rc

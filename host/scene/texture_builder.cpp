@@ -69,11 +69,7 @@ TexturePtr Loader::buildTexture(const std::shared_ptr<XmlFile>& file, const pugi
     if (tag == "volume") {
       volume = buildVolume(file, child);
     } else {
-      const Named& n = resolveRef(file, child);
-      if (n.kind != Kind::Volume || !n.volume)
-        throw LocatedError(whereOf(*file, child) + ": id '" + std::string(child.attribute("id").value()) +
-                           "' (defined at " + n.where + ") is not a volume");
-      volume = n.volume;
+      volume = resolveRefTo(file, child, Kind::Volume, "volume").volume;
     }
   }
   TexturePtr texture;
