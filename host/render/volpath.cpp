@@ -18,6 +18,12 @@ namespace {
 // whatever the scene (a stack of invisible surfaces), far above any meaningful nesting.
 constexpr int kMaxShadowCrossings = 1024;
 
+// The material of a hit, null where the surface has none (the path ends there).
+const Bsdf* materialOf(const Scene& scene, const Hit& hit) {
+  if (hit.bsdf < 0 || hit.bsdf >= static_cast<int>(scene.bsdfs.size())) return nullptr;
+  return scene.bsdfs[hit.bsdf].get();
+}
+
 const MediumInterface* mediaOf(const Scene& scene, const Hit& hit) {
   if (hit.mesh >= 0) return &scene.meshes[hit.mesh].media;
   if (hit.sphere >= 0) return &scene.spheres[hit.sphere].media;
@@ -89,9 +95,10 @@ Color shadowTransmittance(const RenderContext& ctx, Ray ray, int medium) {
     const Hit hit = ctx.accel.intersect(ray);
     if (medium >= 0) tr *= transmittance(scene.media[medium].sigmaT, (hit.valid() ? hit.t : ray.tMax) - ray.tMin);
     if (!hit.valid()) return tr;
-    if (hit.bsdf < 0 || hit.bsdf >= static_cast<int>(scene.bsdfs.size()) || !scene.bsdfs[hit.bsdf]) return Color(0.0f);
+    const Bsdf* material = materialOf(scene, hit);
+    if (!material) return Color(0.0f);
     BsdfPtr holder;
-    tr *= bsdfAt(*scene.bsdfs[hit.bsdf], hit.uv, holder).nullTransmission();
+    tr *= bsdfAt(*material, hit.uv, holder).nullTransmission();
     if (!(maxComponent(tr) > 0.0f)) return Color(0.0f);
     medium = mediumAfter(scene, hit, ray.d, medium);
     Ray next = Accel::spawnRay(hit, ray.d);
@@ -162,10 +169,11 @@ Color volPathRadiance(const RenderContext& ctx, const IntegratorSettings& settin
     if (!(depth == 0 && settings.hideEmitters))
       L += beta * emitterMis(ctx, lastScatter, ray.d, hit, lastScatterPdf, depth == 0 || specularChain);
     if (!hit.valid()) break;
-    if (hit.bsdf < 0 || hit.bsdf >= static_cast<int>(scene.bsdfs.size()) || !scene.bsdfs[hit.bsdf]) break;
-    const Frame frame = shadingFrame(*scene.bsdfs[hit.bsdf], hit, -ray.d);
+    const Bsdf* material = materialOf(scene, hit);
+    if (!material) break;
+    const Frame frame = shadingFrame(*material, hit, -ray.d);
     BsdfPtr pointBsdf;
-    const Bsdf& bsdf = bsdfAt(*scene.bsdfs[hit.bsdf], hit, frame, hit.ns, pointBsdf);
+    const Bsdf& bsdf = bsdfAt(*material, hit, frame, hit.ns, pointBsdf);
     const Vec3 wo = frame.toLocal(-ray.d);
     if (bsdf.tinted()) beta *= bsdf.tint(hit.uv, wo);
 
