@@ -174,16 +174,20 @@ def main():
                                args.timeout)
                 # (The statistics name the estimator: a `direct` file runs as "path" with its own
                 # parameters, which --integrator path would drop.)
-                auto = None
+                auto, volumetric = None, False
                 if rc == 0:
                     with open(probe_stats) as f:
-                        auto = json.load(f).get("integrator")
+                        probe = json.load(f)
+                    auto = probe.get("integrator")
+                    # A file whose volpath follows media (rcache's path_core says so) is compared as
+                    # volpath: Mitsuba's `path` ignores media, so --integrator path would too.
+                    volumetric = probe.get("path_core", "").startswith("volpath")
                 forced = auto is None or auto == "rcache"
                 imgs = []
                 if args.compare_integrator:
                     forced, chosen = True, args.compare_integrator
                 else:
-                    chosen = "path" if forced else None
+                    chosen = ("volpath" if volumetric else "path") if forced else None
                 for seed in range(1, args.seeds + 1):
                     img = os.path.join(out, "%s_path_s%d.exr" % (tag, seed))
                     flags = ["--spp", str(args.spp), "--seed", str(seed), "-o", img]

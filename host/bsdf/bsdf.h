@@ -31,6 +31,10 @@ enum BsdfLobe : uint32_t {
   kLobeGlossy = 1u << 1,   // rough microfacet
   kLobeDelta = 1u << 2,    // Dirac (smooth conductor/dielectric/plastic specular part)
   kLobeTransmission = 1u << 3,
+  // Set beside kLobeDelta | kLobeTransmission on a sample that passes through the surface unchanged
+  // (Mitsuba's BSDFFlags::Null: the null BSDF, a mask's holes); Mitsuba's volpath does not count
+  // such a crossing as a scattering vertex.
+  kLobeNull = 1u << 4,
 };
 
 // eval() and pdf() of one pair of directions (Bsdf::evalPdf).
@@ -43,7 +47,7 @@ struct BsdfSample {
   Vec3 wi;              // sampled incoming direction (local)
   Color weight{0.0f};   // f·|cos θi| / pdf (for a delta lobe: the full throughput factor)
   float pdf = 0.0f;     // solid-angle density of the continuous part; 0 for a delta sample
-  uint32_t lobe = 0;    // which lobe produced it (one BsdfLobe bit)
+  uint32_t lobe = 0;    // which lobe produced it (one BsdfLobe bit; a pass-through adds kLobeNull)
   float eta = 1.0f;     // relative IOR crossed (dielectric transmission), else 1
 };
 
@@ -110,6 +114,10 @@ class Bsdf {
   // Seen from behind, the point's frame may be mirrored to the viewer (a twosided material, or one
   // that perturbs the frame of a twosided material).
   virtual bool isTwoSided() const { return false; }
+  // Mitsuba's eval_null_transmission: the share of a shadow ray that passes the surface unchanged
+  // (1 for the null BSDF, 1 − opacity for a mask, 0 for every surface that is there). Only the
+  // volumetric path tracer lets shadow rays through (render/volpath.h), as Mitsuba's volpath does.
+  virtual Color nullTransmission() const { return Color(0.0f); }
 
   std::string id;  // the scene's id attribute, or "<type>#<n>" when anonymous
 };

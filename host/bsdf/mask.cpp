@@ -40,6 +40,8 @@ class MaskBsdf final : public Bsdf {
     if (opacity_ < 1.0f || opacityTexture_) l |= kLobeDelta | kLobeTransmission;
     return l;
   }
+  // Mitsuba: 1 − o·(1 − the nested surface's own pass-through).
+  Color nullTransmission() const override { return Color(1.0f) - opacity_ * (Color(1.0f) - nested_->nullTransmission()); }
   float glossyAlpha() const override { return nested_->glossyAlpha(); }
   bool isotropic() const override { return nested_->isotropic(); }
   std::string parameterKey() const override {

@@ -16,6 +16,7 @@ class NullBsdf final : public Bsdf {
   float pdf(const Vec3&, const Vec3&) const override { return 0.0f; }
   std::optional<BsdfSample> sample(const Vec3& wo, float, const Vec2&) const override { return passThroughSample(wo); }
   uint32_t lobes() const override { return kLobeDelta | kLobeTransmission; }
+  Color nullTransmission() const override { return Color(1.0f); }
   std::string parameterKey() const override { return "null()"; }
   std::string typeName() const override { return "null"; }
 };

@@ -13,7 +13,7 @@ inline std::optional<BsdfSample> passThroughSample(const Vec3& wo) {
   s.wi = -wo;
   s.weight = Color(1.0f);
   s.pdf = 0.0f;
-  s.lobe = kLobeDelta | kLobeTransmission;
+  s.lobe = kLobeDelta | kLobeTransmission | kLobeNull;
   s.eta = 1.0f;
   return s;
 }

@@ -30,6 +30,7 @@ class PolarizerBsdf final : public Bsdf {
     return s;
   }
   uint32_t lobes() const override { return kLobeDelta | kLobeTransmission; }
+  Color nullTransmission() const override { return 0.5f * transmittance_; }
   std::string parameterKey() const override { return "polarizer(transmittance=" + hexColor(transmittance_) + ")"; }
   std::string typeName() const override { return "polarizer"; }
 

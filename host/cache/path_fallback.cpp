@@ -8,6 +8,7 @@
 #include "cache/rng_salts.h"
 #include "core/parallel.h"
 #include "core/rng.h"
+#include "render/volpath.h"
 
 namespace rc {
 
@@ -50,6 +51,14 @@ ServedShare servedShare(const RcacheRun& run, const ShadePoint& sp, Rng& rng) {
 
 FallbackDecision decideFallback(const RcacheRun& run) {
   FallbackDecision d;
+  // Records hold surface radiance without media on the way, so a scene whose media the file's
+  // integrator follows is always path traced by the volumetric estimator (render/volpath.h),
+  // whatever the options ask.
+  if (followsMedia(run.ctx.scene, "rcache")) {
+    d.pathTrace = true;
+    d.reason = "path traced: the scene has participating media, which the cache does not carry";
+    return d;
+  }
   if (!run.params.fallback || !run.files.load.empty() || !run.files.save.empty()) {
     d.reason = "not considered";
     return d;

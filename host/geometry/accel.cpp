@@ -260,6 +260,7 @@ Hit triangleHit(const Mesh& mesh, const TriangleConstants& tc, int meshIndex, un
   const float w = 1.0f - u - v;
   // From barycentrics, not o + t·d: the error is then relative to the triangle's coordinates only.
   h.p = w * p0 + u * p1 + v * p2;
+  h.uv.position = h.p;
   h.pError = kPointErrorUlps * kFloatEps * std::max({maxAbs(p0), maxAbs(p1), maxAbs(p2)});
   const Vec3 ng = tc.faceNormal[prim];
   if (!mesh.normals.empty()) {
@@ -301,6 +302,7 @@ Hit sphereHit(const Sphere& s, int index, const Ray& ray, float t, bool withUv) 
   const float len = glm::length(n);
   n = len > 0.0f ? n / len : Vec3(0, 0, 1);
   h.p = s.center + s.radius * n;  // re-projected onto the sphere
+  h.uv.position = h.p;
   h.pError = kPointErrorUlps * kFloatEps * (maxAbs(s.center) + s.radius);
   if (withUv) {
     const float phi = std::atan2(n.y, n.x);
@@ -329,6 +331,7 @@ Hit cylinderHit(const Cylinder& c, const Ray& ray, float t) {
   h.dpdu = g.dpdu;
   h.dpdv = g.dpdv;
   h.uv = g.uv;
+  h.uv.position = h.p;
   return h;
 }
 
@@ -348,6 +351,7 @@ Hit curveHit(const Curve& c, int index, const Ray& ray, unsigned prim, float u, 
   h.dpdu = g.dpdu;
   h.dpdv = g.dpdv;
   h.uv = g.uv;
+  h.uv.position = h.p;
   return h;
 }
 

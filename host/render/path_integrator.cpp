@@ -11,6 +11,7 @@
 #include "render/light_sampler.h"
 #include "render/path_wavefront.h"
 #include "render/render_loop.h"
+#include "render/volpath.h"
 
 namespace rc {
 
@@ -81,8 +82,8 @@ namespace {
 class PathPasses final : public PassRender {
  public:
   PathPasses(const RenderContext& ctx, const IntegratorSettings& settings, PathCore core, BatchQuery query)
-      : ctx_(ctx), settings_(settings), core_(core), query_(query), rays0_(ctx.accel.raysTraced()),
-        camera_(ctx.scene.camera, ctx.scene.film) {
+      : ctx_(ctx), settings_(settings), core_(core), query_(query), media_(followsMedia(ctx.scene, settings.type)),
+        rays0_(ctx.accel.raysTraced()), camera_(ctx.scene.camera, ctx.scene.film) {
     loop_.spp = ctx.options.spp > 0 ? ctx.options.spp : ctx.scene.sampler.sampleCount;
     if (loop_.spp <= 0) throw Error("sampler: sample_count must be positive");
     loop_.seed = ctx.scene.sampler.seed + ctx.options.seed;
@@ -109,6 +110,7 @@ class PathPasses final : public PassRender {
     const double rays = static_cast<double>(ctx_.accel.raysTraced() - rays0_);
     const int spp = loop_.spp * std::max(1, passes);
     stats.setText("integrator", "path");
+    if (media_) stats.setText("path_core", "volpath (scalar; the scene has participating media)");
     stats.set("time_s", seconds);
     stats.set("spp", spp);
     stats.setText("sampler", loop_.lowDiscrepancy ? "ldsampler" : "independent");
@@ -125,6 +127,11 @@ class PathPasses final : public PassRender {
 
  private:
   RenderLoopResult renderPathSamples(Film& film) const {
+    // Media are followed by the scalar volumetric estimator (render/volpath.h), whatever the core.
+    if (media_)
+      return renderSamples(ctx_, film, loop_, [&](const SampleInput& in, Rng& rng, TileFilm&) {
+        return volPathRadiance(ctx_, settings_, *in.cameraRay, rng);
+      });
     if (core_ == PathCore::Scalar)
       return renderSamples(ctx_, film, loop_, [&](const SampleInput& in, Rng& rng, TileFilm&) {
         return pathRadiance(ctx_, settings_, *in.cameraRay, rng, in.cameraHit);
@@ -146,6 +153,7 @@ class PathPasses final : public PassRender {
   const IntegratorSettings& settings_;
   const PathCore core_;
   const BatchQuery query_;
+  const bool media_;  // the scene's media are followed (followsMedia)
   const SteadyClock::time_point start_ = SteadyClock::now();
   const uint64_t rays0_;
   const CameraModel camera_;

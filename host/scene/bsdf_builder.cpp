@@ -74,10 +74,13 @@ void Loader::applyBsdfTextures(const std::shared_ptr<XmlFile>& file, Element& e,
       throw LocatedError(whereOf(*file, child) + ": parameter '" + name + "' is given more than once");
     // rcache plans a material from its textures over uv (a roughness' range, a fingerprint); a
     // mesh attribute has no uv lookup, so it is taken where it only scales the whole BSDF.
-    const bool standIn = texture && !texture->meshAttribute().empty() && !isBsdfFactorParameter(e.type, name);
+    // A volume texture (of the world position) likewise.
+    const bool pointwise = texture && (!texture->meshAttribute().empty() || texture->readsPosition());
+    const bool standIn = pointwise && !isBsdfFactorParameter(e.type, name);
     if (standIn)
-      unsupported(whereOf(*file, child) + ": a mesh_attribute texture on parameter '" + name + "' of <bsdf type=\"" +
-                  e.type + "\"> is not supported (only on diffuse 'reflectance' and conductor 'specular_reflectance'); "
+      unsupported(whereOf(*file, child) + ": a " + (texture->readsPosition() ? "volume" : "mesh_attribute") +
+                  " texture on parameter '" + name + "' of <bsdf type=\"" + e.type +
+                  "\"> is not supported (only on diffuse 'reflectance' and conductor 'specular_reflectance'); "
                   "lenient: its stand-in value");
     Property p;
     p.line = file->lineOf(child);

@@ -15,6 +15,7 @@
 #include "scene/scene_loader.h"
 #include "scene/xml_file.h"
 #include "texture/texture.h"
+#include "texture/volume.h"
 
 namespace rc {
 
@@ -36,24 +37,37 @@ class Loader {
   std::string anonymousName(const std::string& type);  // "<type>#<n>"
 
   // Objects with an id, for <ref id> and duplicate detection.
-  enum class Kind { Bsdf, Emitter, Texture, Shape, Sampler, Other };
+  enum class Kind { Bsdf, Emitter, Texture, Shape, Sampler, Medium, Volume, Other };
   struct Named {
     Kind kind = Kind::Other;
     BsdfPtr bsdf;
     TexturePtr texture;
     SamplerSettings sampler;  // Kind::Sampler: the settings a sensor referring to it takes
+    int medium = -1;          // Kind::Medium: index into Scene::media
+    VolumePtr volume;         // Kind::Volume
     std::string where;
   };
   // Registers e's id (an element without one gets a placeholder entry nobody can refer to).
   Named& registerId(const Element& e, Kind kind, BsdfPtr bsdf = nullptr, TexturePtr texture = nullptr);
   const Named& resolveRef(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref);
+  // resolveRef, refusing an object of another kind: "id 'x' (defined at …) is not a <what>".
+  const Named& resolveRefTo(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref, Kind kind,
+                            const std::string& what);
 
   BsdfPtr buildBsdf(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
   // Mitsuba 3's material for a shape without one: diffuse with reflectance 0.5, or 0 on the shape of
   // an area emitter (src/render/shape.cpp), so an emitter does not also reflect.
   BsdfPtr defaultBsdf(bool emitterShape = false);
   TexturePtr buildTexture(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
-  int bsdfIndex(const BsdfPtr& bsdf);  // index into scene_.bsdfs, adding it on first use
+  int bsdfIndex(const BsdfPtr& bsdf);
+  // Media and volumes (medium_builder.cpp, volume_builder.cpp). buildMedium returns its index in
+  // Scene::media; mediumOf reads a nested <medium> or a <ref> to one.
+  int buildMedium(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
+  int mediumOf(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& child);
+  VolumePtr buildVolume(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
+  // A parameter that may be a float, an rgb or a nested volume (`nested`: name → built volume).
+  VolumePtr volumeParameter(const Element& e, const std::string& name, const Color& fallback,
+                            const std::map<std::string, VolumePtr>& nested) const;  // index into scene_.bsdfs, adding it on first use
   void buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
   // Top-level emitters (shapeMesh = shapeSphere = -1) and area emitters of a shape.
   void buildEmitter(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node, int shapeMesh, int shapeSphere);

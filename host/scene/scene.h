@@ -11,6 +11,7 @@
 #include "core/math.h"
 #include "core/properties.h"
 #include "scene/curve_loader.h"
+#include "scene/medium.h"
 #include "texture/texture.h"
 
 namespace rc {
@@ -25,6 +26,7 @@ struct Mesh {
   MeshAttributes attributes;           // a PLY file's extra vertex/face values (face ones per triangle)
   int bsdf = -1;                       // index into Scene::bsdfs
   int emitter = -1;                    // index into Scene::emitters (area emitter), or -1
+  MediumInterface media;               // interior/exterior media (render/volpath.h)
   size_t degenerateSkipped = 0;        // zero-area / NaN triangles dropped while loading
 };
 
@@ -36,6 +38,7 @@ struct Sphere {
   bool flipNormals = false;            // normals point inward
   int bsdf = -1;
   int emitter = -1;
+  MediumInterface media;
 };
 
 // An analytic open cylinder (shape `cylinder`, no caps): the unit cylinder x² + y² = 1, 0 ≤ z ≤ 1
@@ -141,6 +144,8 @@ struct Scene {
   std::vector<Cylinder> cylinders;
   std::vector<Curve> curves;
   std::vector<Emitter> emitters;
+  std::vector<Medium> media;  // participating media (scene/medium.h), referred to by index
+  int cameraMedium = -1;      // the sensor's medium (Mitsuba's sensor `medium`), −1 for none
   Camera camera;
   FilmSettings film;
   SamplerSettings sampler;

@@ -190,6 +190,10 @@ void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     buildTexture(file, node);  // registers its id for <ref name="..." id="..."/> in BSDFs
   } else if (tag == "sampler") {
     buildTopLevelSampler(file, node);
+  } else if (tag == "medium") {
+    buildMedium(file, node);  // registers its id for the shapes' and sensor's <ref>s
+  } else if (tag == "volume") {
+    buildVolume(file, node);
   } else if (tag == "film" || tag == "rfilter") {
     throw LocatedError(whereOf(*file, node) + ": <" + tag + "> must be inside " +
                        (tag == "rfilter" ? "<film>" : "<sensor>"));
@@ -284,6 +288,15 @@ const Loader::Named& Loader::resolveRef(const std::shared_ptr<XmlFile>& file, co
   auto it = ids_.find(id);
   if (it == ids_.end()) throw LocatedError(whereOf(*file, ref) + ": reference to unknown id '" + id + "' (define it before use)");
   return it->second;
+}
+
+const Loader::Named& Loader::resolveRefTo(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& ref, Kind kind,
+                                          const std::string& what) {
+  const Named& n = resolveRef(file, ref);
+  if (n.kind != kind)
+    throw LocatedError(whereOf(*file, ref) + ": id '" + std::string(ref.attribute("id").value()) + "' (defined at " +
+                       n.where + ") is not a " + what);
+  return n;
 }
 
 }  // namespace rc

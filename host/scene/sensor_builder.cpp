@@ -171,7 +171,11 @@ void Loader::buildSensor(const std::shared_ptr<XmlFile>& file, const pugi::xml_n
     const std::string tag = child.name();
     if (tag == "film") buildFilm(*this, parseElement(file, child), scene_.film);
     else if (tag == "sampler") buildSampler(*this, parseElement(file, child), scene_);
-    else if (tag == "ref") useSampler(resolveRef(file, child), file, child);
+    else if (tag == "medium" || (tag == "ref" && resolveRef(file, child).kind == Kind::Medium)) {
+      // Mitsuba's sensor takes any medium object among its children as the one it sits in.
+      if (scene_.cameraMedium >= 0) throw LocatedError(whereOf(*file, child) + ": the sensor's medium is given twice");
+      scene_.cameraMedium = mediumOf(file, child);
+    } else if (tag == "ref") useSampler(resolveRef(file, child), file, child);
     else unexpectedChild(e, child);
   }
   checkUnused(e);

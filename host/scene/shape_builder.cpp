@@ -157,12 +157,20 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
 
   // Nested material and emitter (the emitter is built once the shape has its index).
   BsdfPtr bsdf;
+  MediumInterface media;
   pugi::xml_node emitterNode;
   std::shared_ptr<XmlFile> emitterFile = file;
   for (const pugi::xml_node& child : e.children) {
     const std::string tag = child.name();
     const auto* sharedEmitter = tag == "ref" ? areaEmitter(child.attribute("id").value()) : nullptr;
-    if (sharedEmitter) {
+    const std::string role = child.attribute("name").value();
+    if ((tag == "medium" || tag == "ref") && (role == "interior" || role == "exterior")) {
+      int& side = role == "interior" ? media.interior : media.exterior;
+      if (side >= 0) throw LocatedError(whereOf(*file, child) + ": the shape's " + role + " medium is given twice");
+      side = mediumOf(file, child);
+    } else if (tag == "medium") {
+      throw LocatedError(whereOf(*file, child) + ": a shape's <medium> needs name=\"interior\" or name=\"exterior\"");
+    } else if (sharedEmitter) {
       if (emitterNode) throw LocatedError(whereOf(*file, child) + ": a shape takes one emitter, this is the second");
       emitterFile = sharedEmitter->first;
       emitterNode = sharedEmitter->second;
@@ -202,6 +210,8 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     emitterNode = pugi::xml_node();  // lenient: the shape is kept without its emission
   }
   if (e.type == "cylinder" || e.type == "sphere" || curve) checkMeshAttributes(e, bsdf, nullptr);
+  if (media.transition() && (e.type == "cylinder" || curve))
+    unsupported(e.where() + ": media on a " + e.type + " are not supported (an open surface bounds no volume)");
   if (curve) {
     if (flip) e.failParam("flip_normals", "a curve's normals cannot be flipped (its inside is never hit)");
     scene_.curves.push_back(makeCurve(e, toWorld, name, material, [&](const std::string& fn) { return resolvePath(e, fn); }));
@@ -210,6 +220,7 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   } else if (e.type == "sphere") {
     sphereIndex = static_cast<int>(scene_.spheres.size());
     scene_.spheres.push_back(makeSphere(e, toWorld, name, flip, material));
+    scene_.spheres.back().media = media;
   } else {
     MeshPolicy policy;
     policy.flipNormals = flip;
@@ -221,6 +232,7 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     checkMeshAttributes(e, bsdf, &mesh);
     mesh.name = name;
     mesh.bsdf = material;
+    mesh.media = media;
     meshIndex = static_cast<int>(scene_.meshes.size());
     scene_.meshes.push_back(std::move(mesh));
   }

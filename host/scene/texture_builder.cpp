@@ -62,9 +62,21 @@ TexturePtr loadBitmap(Loader& loader, const Element& e, const UvTransform& toUv)
 TexturePtr Loader::buildTexture(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
   const Element e = parseElement(file, node);
   if (e.type.empty()) e.fail("missing attribute 'type'");
-  for (const pugi::xml_node& child : e.children) unexpectedChild(e, child);
+  VolumePtr volume;  // a `volume` texture's nested <volume name="volume"> or <ref> to one
+  for (const pugi::xml_node& child : e.children) {
+    const std::string tag = child.name();
+    if (e.type != "volume" || volume || (tag != "volume" && tag != "ref")) unexpectedChild(e, child);
+    if (tag == "volume") {
+      volume = buildVolume(file, child);
+    } else {
+      volume = resolveRefTo(file, child, Kind::Volume, "volume").volume;
+    }
+  }
   TexturePtr texture;
-  if (e.type == "checkerboard") {
+  if (e.type == "volume") {
+    if (!volume) e.fail("missing the nested <volume name=\"volume\">");
+    texture = makeVolumeTexture(volume);
+  } else if (e.type == "checkerboard") {
     const Color c0 = e.located([&] { return e.props.getColor("color0", Color(0.4f)); });
     const Color c1 = e.located([&] { return e.props.getColor("color1", Color(0.2f)); });
     texture = makeCheckerboard(c0, c1, uvTransformOf(e.transform("to_uv")));
@@ -78,7 +90,7 @@ TexturePtr Loader::buildTexture(const std::shared_ptr<XmlFile>& file, const pugi
     const float scale = e.located([&] { return e.props.getFloat("scale", 1.0f); });
     texture = makeMeshAttributeTexture(name, scale);
   } else {
-    unsupported(e.where() + ": unknown plugin '" + e.type + "' (known: checkerboard, bitmap, mesh_attribute)");
+    unsupported(e.where() + ": unknown plugin '" + e.type + "' (known: checkerboard, bitmap, mesh_attribute, volume)");
     registerId(e, Kind::Texture);
     return nullptr;
   }

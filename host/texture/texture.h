@@ -53,6 +53,7 @@ struct TexturePoint : Vec2 {
   glm::uvec3 vertices{0u};                     // the triangle's vertex indices
   uint32_t face = 0;                           // the triangle's index
   Vec2 bary{0.0f};                             // weights of vertices.y and .z (x gets 1 − u − v)
+  Vec3 position{0.0f};                         // the world-space point (a `volume` texture reads it)
 };
 
 class Texture {
@@ -74,6 +75,9 @@ class Texture {
   // The attribute a `mesh_attribute` texture reads (empty for every other texture): the loader
   // checks that the shapes it shades carry it.
   virtual std::string meshAttribute() const { return {}; }
+  // True for a texture of the world position (TexturePoint::position), not of uv: the planner's uv
+  // lattices say nothing about it.
+  virtual bool readsPosition() const { return false; }
 };
 
 using TexturePtr = std::shared_ptr<const Texture>;

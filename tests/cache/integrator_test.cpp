@@ -217,3 +217,38 @@ TEST(RcacheIntegrator, ImportanceSampledFloorKeepsTheEmitterSeenByItsBsdfSample)
 
 }  // namespace
 }  // namespace rc
+
+namespace rc {
+namespace {
+
+double meanLuminance(const Image& img) {
+  double sum = 0.0;
+  for (const Color& c : img.pixels) sum += luminance(c);
+  return sum / static_cast<double>(img.pixels.size());
+}
+
+// Records carry no media: a volpath file whose camera sits in fog is path traced through the fog
+// whatever the options say; a `path` file renders surfaces only (Mitsuba's path ignores media) and
+// may be cached.
+TEST(RcacheIntegrator, VolpathSceneWithMediaIsPathTracedThroughItsMedia) {
+  Scene s = test::boxScene(0.0f, 16, 12);
+  Medium fog;
+  fog.name = "fog";
+  fog.sigmaT = Color(2.0f);  // exp(−2·3) ≈ 0.25 % of the box is seen unscattered
+  fog.albedo = makeConstVolume(Color(0.5f));
+  s.media.push_back(fog);
+  s.cameraMedium = 0;
+  s.integrator.type = "volpath";
+  const auto foggy = test::renderScene(s, test::rcacheSettings(s, {{"fallback", "false"}}), 2);
+  EXPECT_NE(test::statText(foggy.stats, "fallback").find("participating media"), std::string::npos);
+  EXPECT_EQ(test::statText(foggy.stats, "path_core").rfind("volpath", 0), 0u);
+  s.integrator.type = "path";
+  const auto clear = test::renderScene(s, test::rcacheSettings(s, {{"fallback", "false"}}), 2);
+  EXPECT_EQ(test::statText(clear.stats, "fallback").find("participating media"), std::string::npos);
+  EXPECT_EQ(test::statText(clear.stats, "path_core"), "");
+  EXPECT_GT(clear.stats.get("records"), 0.0);
+  EXPECT_LT(meanLuminance(foggy.image), 0.5 * meanLuminance(clear.image));
+}
+
+}  // namespace
+}  // namespace rc

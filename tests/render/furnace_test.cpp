@@ -30,12 +30,7 @@ Estimate estimate(const test::World& w, const IntegratorSettings& s, const Ray& 
   return e;
 }
 
-Ray rayAt(const Vec3& o, const Vec3& target) {
-  Ray r;
-  r.o = o;
-  r.d = glm::normalize(target - o);
-  return r;
-}
+using test::rayAt;
 
 // Convex ρ = 1 diffuse sphere under a constant emitter of radiance 1: every path sees radiance 1.
 TEST(Furnace, DiffuseSphereUnderConstantEmitter) {

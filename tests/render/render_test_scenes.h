@@ -82,6 +82,14 @@ inline std::vector<Mesh> insideOfBox(const Vec3& lo, const Vec3& hi, int bsdf, i
   };
 }
 
+// A ray from o through target (unit direction).
+inline Ray rayAt(const Vec3& o, const Vec3& target) {
+  Ray r;
+  r.o = o;
+  r.d = glm::normalize(target - o);
+  return r;
+}
+
 // Mitsuba's look_at: columns (left, up, dir, origin).
 inline Mat4 lookAt(const Vec3& origin, const Vec3& target, const Vec3& up) {
   const Vec3 dir = glm::normalize(target - origin);
