@@ -92,19 +92,7 @@ TEST(LightSampler, EnvironmentPdfIntegratesToItsSelectionProbability) {
   EXPECT_GT(frac, 0.01);
 }
 
-struct Stat {
-  double mean[3] = {0, 0, 0}, m2[3] = {0, 0, 0};
-  int n = 0;
-  void add(const Color& c) {
-    ++n;
-    for (int k = 0; k < 3; ++k) {
-      const double d = c[k] - mean[k];
-      mean[k] += d / n;
-      m2[k] += d * (c[k] - mean[k]);
-    }
-  }
-  double stderr_(int k) const { return std::sqrt(m2[k] / (n - 1) / n); }
-};
+using test::Stat;
 
 // The MIS estimator (light + BSDF sampling) is unbiased: it matches pure BSDF sampling (which
 // counts emission where its rays land, weight 1) and pure light sampling within the statistical
