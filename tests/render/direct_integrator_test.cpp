@@ -132,11 +132,7 @@ TEST(DirectIntegrator, ZeroSamplesOfATechniqueMissWhatOnlyItFinds) {
 
   Scene point;
   point.meshes.push_back(test::quad({-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}, test::addBsdf(point, test::diffuse(Color(kRho)))));
-  Emitter bulb;
-  bulb.type = EmitterType::Point;
-  bulb.position = Vec3(0, 0, 2);
-  bulb.intensity = Color(8.0f);
-  test::addEmitter(point, bulb);
+  test::addEmitter(point, test::pointEmitter(Vec3(0, 0, 2), Color(8.0f)));
   const test::World wp(std::move(point));
   for (const auto& [ne, nb] : {std::pair{0, 2}, {1, 0}, {3, 1}}) {
     Rng rng(5);

@@ -223,11 +223,7 @@ TEST(DirectLight, PointAndDirectionalLights) {
   Scene s;
   const float rho = 0.6f;
   s.meshes.push_back(test::quad({-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}, test::addBsdf(s, test::diffuse(Color(rho)))));
-  Emitter point;
-  point.type = EmitterType::Point;
-  point.position = Vec3(1, 0, 2);
-  point.intensity = Color(10.0f);
-  test::addEmitter(s, point);
+  test::addEmitter(s, test::pointEmitter(Vec3(1, 0, 2), Color(10.0f)));
   Emitter sun;
   sun.type = EmitterType::Directional;
   sun.direction = glm::normalize(Vec3(0, -1, -1));

@@ -51,6 +51,14 @@ inline Emitter areaEmitter(const Color& radiance) {
   return e;
 }
 
+inline Emitter pointEmitter(const Vec3& position, const Color& intensity) {
+  Emitter e;
+  e.type = EmitterType::Point;
+  e.position = position;
+  e.intensity = intensity;
+  return e;
+}
+
 inline Emitter constantEmitter(const Color& radiance) {
   Emitter e;
   e.type = EmitterType::Constant;
