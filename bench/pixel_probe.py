@@ -39,6 +39,7 @@ def main():
     ap.add_argument("--seeds", type=int, default=16)
     ap.add_argument("--spp", type=int, default=1024)
     ap.add_argument("--work", default="/tmp/rcache_pixel_probe")
+    ap.add_argument("--integrator", default="path", help="rcache's --integrator (e.g. the file's `direct`)")
     args = ap.parse_args()
     os.makedirs(args.work, exist_ok=True)
     name = os.path.splitext(os.path.basename(args.scene))[0]
@@ -48,7 +49,7 @@ def main():
                    check=True)
     for s in range(args.seeds):
         if not os.path.exists(rpat % s):
-            subprocess.run([args.rcache, args.scene, "--integrator", "path", "--spp", str(args.spp), "--seed", str(s + 1),
+            subprocess.run([args.rcache, args.scene, "--integrator", args.integrator, "--spp", str(args.spp), "--seed", str(s + 1),
                             "--quiet", "-o", rpat % s], check=True)
     import mitsuba as mi
     mi.set_variant("scalar_rgb")

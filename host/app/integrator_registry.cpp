@@ -4,24 +4,12 @@
 #include "cache/rcache_integrator.h"
 #include "core/error.h"
 #include "scene/integrator_params.h"
+#include "render/direct_integrator.h"
 #include "render/path_integrator.h"
 
 namespace rc {
 
 namespace {
-
-// Mitsuba's direct integrator with one emitter and one BSDF sample is the path tracer's estimator
-// cut after the first bounce's emission (max_depth = 2) without Russian roulette (rr_depth 3 is
-// never reached by a 2-segment path).
-void readDirectParams(ParamReader& in, IntegratorSettings& s) {
-  s.hideEmitters = in.flag("hide_emitters", false);
-  for (const char* name : {"shading_samples", "emitter_samples", "bsdf_samples"})
-    if (in.integer(name, 1, 1, 1 << 20) != 1)
-      throw Error("direct: '" + std::string(name) + "' other than 1 is not supported (one emitter and one BSDF "
-                  "sample per pixel sample; raise the sample count instead)");
-  s.maxDepth = 2;
-  s.rrDepth = 3;
-}
 
 void readRcacheParamsInto(ParamReader& in, IntegratorSettings& s) {
   readPathParams(in, s);
@@ -37,7 +25,7 @@ const std::vector<IntegratorEntry> kEntries = {
     {"path", false, true, readPathParams, makeDefaultPathIntegrator},
     {"volpath", false, true, readPathParams, makeDefaultPathIntegrator},
     {"volpathmis", false, true, readPathParams, makeDefaultPathIntegrator},
-    {"direct", false, false, readDirectParams, makeDefaultPathIntegrator},
+    {"direct", false, false, readDirectParams, makeDirectIntegrator},
     {"rcache", true, false, readRcacheParamsInto, makeRcacheIntegrator},
 };
 

@@ -6,10 +6,9 @@
 //   path        unidirectional path tracer (render/path_integrator.h), the ground truth
 //   volpath     Mitsuba's volumetric path tracer; without participating media (rcache has none) it
 //   volpathmis  is the path tracer, and renders as `path` with the same parameters
-//   direct      Mitsuba's direct integrator: visible emission plus one emitter sample and one BSDF
-//               sample at the first hit, MIS-combined, no indirect light — the path tracer's
-//               estimator with max_depth = 2 and no Russian roulette; emitter_samples /
-//               bsdf_samples / shading_samples other than 1 are refused
+//   direct      Mitsuba's direct integrator (render/direct_integrator.h): visible emission plus
+//               emitter_samples light and bsdf_samples BSDF samples at the first hit,
+//               MIS-combined, no indirect light
 //   rcache      radiance caching (cache/rcache_integrator.h)
 #include <memory>
 #include <string>

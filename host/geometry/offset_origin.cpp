@@ -2,7 +2,9 @@
 // accel.h). Floating-point error in a hit point is relative to
 // the magnitude of the coordinates it was computed from, so the offset scales with max|p| (and with
 // the shape's own coordinate magnitude through Hit::pError) and has no absolute floor that would
-// swamp tiny scenes — unlike Mitsuba's (1 + max|p|)·ε, which breaks below ~1e-3 scene units.
+// swamp tiny scenes — unlike Mitsuba's (1 + max|p|)·ε, which breaks below ~1e-3 scene units and,
+// being ~6× larger at |p| ≈ 1, jumps layers thinner than itself (an air gap inside a glass object
+// renders differently in the two; bench/RESULTS.md, agree18).
 #include <algorithm>
 
 #include "geometry/accel.h"

@@ -28,7 +28,7 @@ bool visible(const Accel& accel, const Hit& hit, const LightSample& ls) { return
 
 std::optional<UnshadowedLight> lightSampleUnshadowed(const RenderContext& ctx, const Hit& hit, const Frame& frame,
                                                      const Vec3& woLocal, const Bsdf& bsdf, Rng& rng,
-                                                     int misLightSamples) {
+                                                     int misLightSamples, int misBsdfSamples) {
   // Always draw the same three numbers so the stream stays aligned whatever happens below; the
   // point on the light first, so that it gets a low-discrepancy pair of its own.
   const Vec2 u = rng.next2D();
@@ -38,7 +38,7 @@ std::optional<UnshadowedLight> lightSampleUnshadowed(const RenderContext& ctx, c
   if (!ls || !(ls->pdf > 0.0f || ls->delta)) return std::nullopt;
   const Vec3 wiLocal = frame.toLocal(ls->wi);
   // The BSDF's density only where MIS weighs the sample, then with its value in one call.
-  const bool weighted = misLightSamples != 0 && !ls->delta;
+  const bool weighted = misLightSamples != 0 && misBsdfSamples != 0 && !ls->delta;
   const BsdfValue f = weighted ? bsdf.evalPdf(woLocal, wiLocal) : BsdfValue{bsdf.eval(woLocal, wiLocal), 0.0f};
   if (maxComponent(f.f) <= 0.0f || maxComponent(ls->radiance) <= 0.0f) return std::nullopt;
   UnshadowedLight out;
@@ -46,8 +46,8 @@ std::optional<UnshadowedLight> lightSampleUnshadowed(const RenderContext& ctx, c
   if (!weighted) {
     out.value = f.f * ls->radiance;
   } else {
-    const float n = static_cast<float>(misLightSamples);
-    out.value = f.f * ls->radiance * powerHeuristic(n * ls->pdf, f.pdf);
+    out.value = f.f * ls->radiance *
+                powerHeuristic(static_cast<float>(misLightSamples) * ls->pdf, static_cast<float>(misBsdfSamples) * f.pdf);
   }
   return out;
 }
@@ -55,8 +55,9 @@ std::optional<UnshadowedLight> lightSampleUnshadowed(const RenderContext& ctx, c
 namespace {
 // One light sample and its shadow ray.
 Color lightSampleContribution(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
-                              const Bsdf& bsdf, Rng& rng, int misLightSamples) {
-  const std::optional<UnshadowedLight> light = lightSampleUnshadowed(ctx, hit, frame, woLocal, bsdf, rng, misLightSamples);
+                              const Bsdf& bsdf, Rng& rng, int misLightSamples, int misBsdfSamples = 1) {
+  const std::optional<UnshadowedLight> light =
+      lightSampleUnshadowed(ctx, hit, frame, woLocal, bsdf, rng, misLightSamples, misBsdfSamples);
   if (!light || ctx.accel.occluded(light->shadow)) return Color(0.0f);
   return light->value;
 }
@@ -80,8 +81,9 @@ Color directLightCheapest(const RenderContext& ctx, const Hit& hit, const Frame&
 }
 
 Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorld, const Hit& next, float bsdfPdf,
-                 bool delta, int lightSamples) {
+                 bool delta, int lightSamples, int bsdfSamples) {
   const float n = static_cast<float>(lightSamples);
+  bsdfPdf *= static_cast<float>(bsdfSamples);
   if (next.valid()) {
     const Color Le = emitted(ctx.lights.emitters(), next, -dirWorld);
     if (maxComponent(Le) <= 0.0f) return Color(0.0f);
@@ -96,11 +98,11 @@ Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorl
 }
 
 Color lightStrategyMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
-                       const Bsdf& bsdf, Rng& rng, int lightSamples) {
+                       const Bsdf& bsdf, Rng& rng, int lightSamples, int bsdfSamples) {
   lightSamples = std::max(1, lightSamples);
   Color L(0.0f);
   for (int k = 0; k < lightSamples; ++k)
-    L += lightSampleContribution(ctx, hit, frame, woLocal, bsdf, rng, lightSamples);
+    L += lightSampleContribution(ctx, hit, frame, woLocal, bsdf, rng, lightSamples, bsdfSamples);
   if (lightSamples > 1) L /= static_cast<float>(lightSamples);
   return L;
 }

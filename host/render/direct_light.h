@@ -39,29 +39,31 @@ inline float powerHeuristic(float pdfA, float pdfB) {
 // BSDF-sampling strategy's contribution once the sampled ray (from `from`, world direction `dirWorld`)
 // found `next` (next.valid() false = escaped to the environment). `bsdfPdf` is the continuous pdf of
 // the sample (ignored when `delta`). Returns the MIS-weighted emitted radiance (not multiplied by
-// the sample's weight).
+// the sample's weight). The weight is the power heuristic of bsdfSamples·pdf_bsdf against
+// lightSamples·pdf_light (Veach's multi-sample MIS: one of bsdfSamples BSDF samples beside
+// lightSamples light samples; either count may be 0, which leaves the other technique weight 1).
 Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorld, const Hit& next,
-                 float bsdfPdf, bool delta, int lightSamples = 1);
+                 float bsdfPdf, bool delta, int lightSamples = 1, int bsdfSamples = 1);
 
 // The light-sampling half of directLight: `lightSamples` light samples (one shadow ray each)
-// averaged, MIS-weighted (power heuristic on lightSamples·pdf_light vs pdf_bsdf, Veach's
-// multi-sample MIS) against one BSDF sample that the caller traces itself — the path tracer's and
-// rcache's path continuation — and weights with emitterMis(…, lightSamples). Consumes
-// 3·lightSamples numbers.
+// averaged, MIS-weighted (power heuristic on lightSamples·pdf_light vs bsdfSamples·pdf_bsdf, Veach's
+// multi-sample MIS) against the BSDF samples that the caller traces itself — the path tracer's and
+// rcache's path continuation (one), Mitsuba's `direct` (bsdf_samples, 0 = light sampling alone) —
+// and weights with emitterMis(…, lightSamples, bsdfSamples). Consumes 3·lightSamples numbers.
 Color lightStrategyMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,
-                       const Bsdf& bsdf, Rng& rng, int lightSamples);
+                       const Bsdf& bsdf, Rng& rng, int lightSamples, int bsdfSamples = 1);
 
-// One light sample (MIS-weighted as one of misLightSamples beside one BSDF sample; 0 = light
-// sampling alone, weight 1) before its shadow ray is traced: `value` counts only when `shadow` is
-// unoccluded. Empty when the sample carries nothing (no ray needed). Consumes 3 numbers. Lets a
-// batched caller trace the shadow rays of many vertices in one occlusion query.
+// One light sample (MIS-weighted as one of misLightSamples beside misBsdfSamples BSDF samples;
+// either 0 = light sampling alone, weight 1) before its shadow ray is traced: `value` counts only
+// when `shadow` is unoccluded. Empty when the sample carries nothing (no ray needed). Consumes 3
+// numbers. Lets a batched caller trace the shadow rays of many vertices in one occlusion query.
 struct UnshadowedLight {
   Ray shadow;
   Color value{0.0f};
 };
 std::optional<UnshadowedLight> lightSampleUnshadowed(const RenderContext& ctx, const Hit& hit, const Frame& frame,
                                                      const Vec3& woLocal, const Bsdf& bsdf, Rng& rng,
-                                                     int misLightSamples);
+                                                     int misLightSamples, int misBsdfSamples = 1);
 
 // lightStrategyMis over a batch of shading points, their shadow rays traced in one occlusion query
 // (BatchQuery): out[i] = lightStrategyMis(ctx, points[i]…, rngs[i], lightSamples), bit for bit

@@ -1,6 +1,7 @@
 #include "render/path_integrator.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/error.h"
 #include "core/timing.h"
@@ -81,9 +82,10 @@ namespace {
 // indices, into the caller's film.
 class PathPasses final : public PassRender {
  public:
-  PathPasses(const RenderContext& ctx, const IntegratorSettings& settings, PathCore core, BatchQuery query)
+  PathPasses(const RenderContext& ctx, const IntegratorSettings& settings, PathCore core, BatchQuery query,
+             const std::string& name, SampleEstimator estimator)
       : ctx_(ctx), settings_(settings), core_(core), query_(query), media_(followsMedia(ctx.scene, settings.type)),
-        rays0_(ctx.accel.raysTraced()), camera_(ctx.scene.camera, ctx.scene.film) {
+        name_(name), estimator_(estimator), rays0_(ctx.accel.raysTraced()), camera_(ctx.scene.camera, ctx.scene.film) {
     loop_.spp = ctx.options.spp > 0 ? ctx.options.spp : ctx.scene.sampler.sampleCount;
     if (loop_.spp <= 0) throw Error("sampler: sample_count must be positive");
     loop_.seed = ctx.scene.sampler.seed + ctx.options.seed;
@@ -109,7 +111,7 @@ class PathPasses final : public PassRender {
     const double seconds = secondsSince(start_);
     const double rays = static_cast<double>(ctx_.accel.raysTraced() - rays0_);
     const int spp = loop_.spp * std::max(1, passes);
-    stats.setText("integrator", "path");
+    stats.setText("integrator", name_);
     if (media_) stats.setText("path_core", "volpath (scalar; the scene has participating media)");
     stats.set("time_s", seconds);
     stats.set("spp", spp);
@@ -134,7 +136,7 @@ class PathPasses final : public PassRender {
       });
     if (core_ == PathCore::Scalar)
       return renderSamples(ctx_, film, loop_, [&](const SampleInput& in, Rng& rng, TileFilm&) {
-        return pathRadiance(ctx_, settings_, *in.cameraRay, rng, in.cameraHit);
+        return estimator_(ctx_, settings_, *in.cameraRay, rng, in.cameraHit);
       });
     // A tile row's samples (32 pixels × spp) are cut into waves of kWaveSize lanes: enough for full
     // packets through most of a path's bounces, small enough that a wave's buffers stay in cache.
@@ -154,6 +156,8 @@ class PathPasses final : public PassRender {
   const PathCore core_;
   const BatchQuery query_;
   const bool media_;  // the scene's media are followed (followsMedia)
+  const std::string name_;
+  const SampleEstimator estimator_;  // the scalar core's per-sample work
   const SteadyClock::time_point start_ = SteadyClock::now();
   const uint64_t rays0_;
   const CameraModel camera_;
@@ -163,25 +167,34 @@ class PathPasses final : public PassRender {
 
 class PathIntegrator final : public Integrator {
  public:
-  PathIntegrator(const IntegratorSettings& s, PathCore core, BatchQuery query) : settings_(s), core_(core), query_(query) {
+  PathIntegrator(const IntegratorSettings& s, PathCore core, BatchQuery query, std::string name = "path",
+                 SampleEstimator estimator = pathRadiance)
+      : settings_(s), core_(core), query_(query), name_(std::move(name)), estimator_(estimator) {
     if (s.maxDepth < -1) throw Error("integrator path: max_depth must be -1 (unbounded) or ≥ 0");
     if (s.rrDepth < 1) throw Error("integrator path: rr_depth must be ≥ 1");
   }
-  std::string name() const override { return "path"; }
+  std::string name() const override { return name_; }
   std::unique_ptr<PassRender> beginPasses(const RenderContext& ctx, RenderStats&) override {
-    return std::make_unique<PathPasses>(ctx, settings_, core_, query_);
+    return std::make_unique<PathPasses>(ctx, settings_, core_, query_, name_, estimator_);
   }
 
  private:
   IntegratorSettings settings_;
   PathCore core_;
   BatchQuery query_;
+  std::string name_;
+  SampleEstimator estimator_;
 };
 
 }  // namespace
 
 std::unique_ptr<Integrator> makePathIntegrator(const IntegratorSettings& settings, PathCore core, BatchQuery query) {
   return std::make_unique<PathIntegrator>(settings, core, query);
+}
+
+std::unique_ptr<Integrator> makeEstimatorIntegrator(const std::string& name, const IntegratorSettings& settings,
+                                                    SampleEstimator estimator) {
+  return std::make_unique<PathIntegrator>(settings, PathCore::Scalar, BatchQuery::Single, name, estimator);
 }
 
 }  // namespace rc

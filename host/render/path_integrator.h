@@ -3,6 +3,7 @@
 // visible emission only), Russian roulette after rr_depth on the throughput, hide_emitters, BSDF and
 // light sampling combined by MIS. The ground truth every cached render must converge to.
 #include <memory>
+#include <string>
 
 #include "core/rng.h"
 #include "render/integrator.h"
@@ -14,6 +15,14 @@ namespace rc {
 enum class PathCore { Wavefront, Scalar };
 std::unique_ptr<Integrator> makePathIntegrator(const IntegratorSettings& settings, PathCore core = PathCore::Wavefront,
                                                BatchQuery query = BatchQuery::Packet16);
+
+// Radiance along one camera ray from one sample's random numbers (pathRadiance's signature).
+using SampleEstimator = Color (*)(const RenderContext& ctx, const IntegratorSettings& settings, const Ray& ray,
+                                  Rng& rng, const Hit* cameraHit);
+// An integrator named `name` that renders `estimator` per sample through the path tracer's passes
+// (its sample loop, seeds and statistics): Mitsuba's `direct` (render/direct_integrator.h).
+std::unique_ptr<Integrator> makeEstimatorIntegrator(const std::string& name, const IntegratorSettings& settings,
+                                                    SampleEstimator estimator);
 
 }  // namespace rc
 

@@ -24,6 +24,9 @@ class ParamReader {
   bool flag(const std::string& name, bool fallback);
   std::string choice(const std::string& name, const std::string& fallback, std::initializer_list<const char*> options);
 
+  // Whether `name` is written at all (a read of it with a default cannot tell); marks nothing.
+  bool given(const std::string& name) const { return props_ && props_->has(name); }
+
   const std::vector<std::string>& names() const { return names_; }  // every parameter read, in order
 
  private:

@@ -121,6 +121,7 @@ struct IntegratorSettings {
   int maxDepth = -1;      // -1 = unbounded (Russian roulette ends paths)
   int rrDepth = 5;
   bool hideEmitters = false;
+  int emitterSamples = 1, bsdfSamples = 1;  // Mitsuba's `direct`: samples of each technique per pixel sample
   Properties props;       // every parameter as written (typed, use-tracked); -D overrides as text
   std::string where;      // "file:L: <integrator ...>" for messages ("" when built in code)
   std::map<std::string, std::string> paramWhere;  // parameter → its location, for messages

@@ -1,4 +1,4 @@
-// The integrator registry: names, parameter lists for -D routing, aliases (volpath, direct),
+// The integrator registry: names, parameter lists for -D routing, aliases (volpath), direct's counts,
 // unknown types and unused parameters with their locations, and nested integrators.
 #include <gtest/gtest.h>
 
@@ -94,7 +94,7 @@ TEST(IntegratorRegistry, ValuesAreCheckedWhereWritten) {
   EXPECT_EQ(errorOf(text), "");
 }
 
-TEST(IntegratorRegistry, DirectIsPathToDepthTwo) {
+TEST(IntegratorRegistry, DirectReadsMitsubasSampleCounts) {
   IntegratorSettings s;
   s.type = "direct";
   s.props.set("hide_emitters", textProperty("true"));
@@ -103,10 +103,30 @@ TEST(IntegratorRegistry, DirectIsPathToDepthTwo) {
   EXPECT_EQ(s.maxDepth, 2);
   EXPECT_GT(s.rrDepth, 2);  // no Russian roulette within two segments
   EXPECT_TRUE(s.hideEmitters);
-  IntegratorSettings many;
-  many.type = "direct";
-  many.props.set("emitter_samples", textProperty("4"));
-  EXPECT_NE(errorOf(many).find("'emitter_samples' other than 1 is not supported"), std::string::npos);
+  EXPECT_EQ(s.emitterSamples, 1);
+  EXPECT_EQ(s.bsdfSamples, 1);
+  const auto read = [](std::initializer_list<std::pair<const char*, const char*>> params) {
+    IntegratorSettings d;
+    d.type = "direct";
+    for (const auto& [name, value] : params) d.props.set(name, textProperty(value));
+    ParamReader r(&d.props);
+    findIntegrator("direct")->readParams(r, d);
+    return std::pair{d.emitterSamples, d.bsdfSamples};
+  };
+  EXPECT_EQ(read({{"shading_samples", "3"}}), std::pair(3, 3));
+  EXPECT_EQ(read({{"emitter_samples", "4"}, {"bsdf_samples", "0"}}), std::pair(4, 0));
+  EXPECT_EQ(read({{"bsdf_samples", "2"}}), std::pair(1, 2));  // the other count keeps shading_samples' default
+  // Mitsuba's refusals: no samples at all; shading_samples together with either count.
+  IntegratorSettings none;
+  none.type = "direct";
+  none.props.set("emitter_samples", textProperty("0"));
+  none.props.set("bsdf_samples", textProperty("0"));
+  EXPECT_NE(errorOf(none).find("at least one emitter or BSDF sample"), std::string::npos) << errorOf(none);
+  IntegratorSettings both;
+  both.type = "direct";
+  both.props.set("shading_samples", textProperty("2"));
+  both.props.set("bsdf_samples", textProperty("1"));
+  EXPECT_NE(errorOf(both).find("'shading_samples' sets both counts"), std::string::npos) << errorOf(both);
 }
 
 TEST(IntegratorRegistry, NestedIntegratorRendersTheInnerOne) {

@@ -92,19 +92,7 @@ TEST(LightSampler, EnvironmentPdfIntegratesToItsSelectionProbability) {
   EXPECT_GT(frac, 0.01);
 }
 
-struct Stat {
-  double mean[3] = {0, 0, 0}, m2[3] = {0, 0, 0};
-  int n = 0;
-  void add(const Color& c) {
-    ++n;
-    for (int k = 0; k < 3; ++k) {
-      const double d = c[k] - mean[k];
-      mean[k] += d / n;
-      m2[k] += d * (c[k] - mean[k]);
-    }
-  }
-  double stderr_(int k) const { return std::sqrt(m2[k] / (n - 1) / n); }
-};
+using test::Stat;
 
 // The MIS estimator (light + BSDF sampling) is unbiased: it matches pure BSDF sampling (which
 // counts emission where its rays land, weight 1) and pure light sampling within the statistical
@@ -235,11 +223,7 @@ TEST(DirectLight, PointAndDirectionalLights) {
   Scene s;
   const float rho = 0.6f;
   s.meshes.push_back(test::quad({-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}, test::addBsdf(s, test::diffuse(Color(rho)))));
-  Emitter point;
-  point.type = EmitterType::Point;
-  point.position = Vec3(1, 0, 2);
-  point.intensity = Color(10.0f);
-  test::addEmitter(s, point);
+  test::addEmitter(s, test::pointEmitter(Vec3(1, 0, 2), Color(10.0f)));
   Emitter sun;
   sun.type = EmitterType::Directional;
   sun.direction = glm::normalize(Vec3(0, -1, -1));

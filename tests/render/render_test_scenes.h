@@ -1,6 +1,7 @@
 #pragma once
 // Scenes built in code for the render tests (no dependency on the XML loader): meshes, spheres,
 // emitters and BSDFs made through createBsdf with Properties, as the loader would.
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -47,6 +48,14 @@ inline Emitter areaEmitter(const Color& radiance) {
   Emitter e;
   e.type = EmitterType::Area;
   e.radiance = radiance;
+  return e;
+}
+
+inline Emitter pointEmitter(const Vec3& position, const Color& intensity) {
+  Emitter e;
+  e.type = EmitterType::Point;
+  e.position = position;
+  e.intensity = intensity;
   return e;
 }
 
@@ -135,6 +144,21 @@ inline Scene cornellLike(int width, int height) {
   s.sampler.sampleCount = 4;
   return s;
 }
+
+// Running mean and standard error per channel of Monte Carlo estimates (Welford).
+struct Stat {
+  double mean[3] = {0, 0, 0}, m2[3] = {0, 0, 0};
+  int n = 0;
+  void add(const Color& c) {
+    ++n;
+    for (int k = 0; k < 3; ++k) {
+      const double d = c[k] - mean[k];
+      mean[k] += d / n;
+      m2[k] += d * (c[k] - mean[k]);
+    }
+  }
+  double stderr_(int k) const { return std::sqrt(m2[k] / (n - 1) / n); }
+};
 
 struct World {
   Scene scene;
