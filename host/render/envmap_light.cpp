@@ -4,21 +4,26 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/fast_trig.h"
 
 namespace rc {
 
+// Both mappings run once or twice per path vertex (light sample, escaped rays): inline trig
+// (core/fast_trig.h) instead of libm's calls, to within a few float ulps of them.
 Vec3 envDirection(float u, float v, float* sinTheta) {
   const float theta = v * kPi, phi = u * 2.0f * kPi;
-  const float st = std::sin(theta);
+  float st, ct, sp, cp;
+  sinCosFast(theta, st, ct);
+  sinCosFast(phi, sp, cp);
   if (sinTheta) *sinTheta = st;
-  return Vec3(st * std::sin(phi), std::cos(theta), -st * std::cos(phi));
+  return Vec3(st * sp, ct, -st * cp);
 }
 
 Vec2 envUv(const Vec3& d) {
-  float u = std::atan2(d.x, -d.z) * (0.5f * kInvPi);
+  float u = atan2Fast(d.x, -d.z) * (0.5f * kInvPi);
   if (u < 0.0f) u += 1.0f;
   if (u >= 1.0f) u = 0.0f;
-  const float v = std::acos(glm::clamp(d.y, -1.0f, 1.0f)) * kInvPi;
+  const float v = acosFast(glm::clamp(d.y, -1.0f, 1.0f)) * kInvPi;
   return Vec2(u, v);
 }
 
