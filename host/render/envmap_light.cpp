@@ -8,17 +8,15 @@
 
 namespace rc {
 
-// Both mappings run once or twice per path vertex (light sample, escaped rays): inline trig
-// (core/fast_trig.h) instead of libm's calls, to within a few float ulps of them.
 Vec3 envDirection(float u, float v, float* sinTheta) {
   const float theta = v * kPi, phi = u * 2.0f * kPi;
-  float st, ct, sp, cp;
-  sinCosFast(theta, st, ct);
-  sinCosFast(phi, sp, cp);
+  const float st = std::sin(theta);
   if (sinTheta) *sinTheta = st;
-  return Vec3(st * sp, ct, -st * cp);
+  return Vec3(st * std::sin(phi), std::cos(theta), -st * std::cos(phi));
 }
 
+// Runs for every escaped ray (camera and BSDF-sampled): inline atan2 and acos (core/fast_trig.h)
+// instead of libm's calls, to within a few float ulps of them.
 Vec2 envUv(const Vec3& d) {
   float u = atan2Fast(d.x, -d.z) * (0.5f * kInvPi);
   if (u < 0.0f) u += 1.0f;
