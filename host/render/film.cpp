@@ -67,7 +67,7 @@ template <typename Add>
 void forEachFootprint(const ReconstructionFilter& f, Vec2 pos, int w, int h, Add&& add, int rowBegin = 0,
                       int rowEnd = std::numeric_limits<int>::max()) {
   if (!f.isBox()) return forEachFilteredFootprint(f, pos, w, h, add, rowBegin, rowEnd);
-  const int ix = static_cast<int>(std::floor(pos.x)), iy = static_cast<int>(std::floor(pos.y));
+  const int ix = floorToInt(pos.x), iy = floorToInt(pos.y);
   if (ix >= 0 && iy >= std::max(0, rowBegin) && ix < w && iy < std::min(h, rowEnd)) add(ix, iy, 1.0f);
 }
 
