@@ -1,9 +1,9 @@
 #pragma once
 // Inline float atan2 and acos for the per-sample direction → (u, v) mapping of the envmap: the same
 // values as libm's to within a few float ulps (tests/core/fast_trig_test.cpp bounds them against
-// double precision), without a call, and written as straight-line arithmetic with selects so that
-// a loop over arrays of directions can vectorise them. (sin/cos are not here: glibc's sincosf
-// costs no more instructions than an inline polynomial.)
+// double precision), without a call. Written as straight-line arithmetic with selects, so that a
+// loop over arrays of directions could vectorise them (not used that way yet). (sin/cos are not
+// here: glibc's sincosf costs no more instructions than an inline polynomial.)
 //
 // Range reduction and polynomials follow Cephes (S. L. Moshier, atanf.c/asinf.c): the argument
 // reduced to [0, tan π/8] (atan) or to [0, 1/2] (asin), then a short minimax polynomial. Valid for
@@ -52,8 +52,8 @@ inline float acosFast(float x) {
   const float s = outer ? std::sqrt(0.5f * (1.0f - ax)) : ax;
   const float a = asinHalf(s);
   const float positive = outer ? 2.0f * a : kHalfPiF - a;  // acos |x|
-  if (!outer) return x < 0.0f ? kHalfPiF + a : positive;
-  return x < 0.0f ? kPiF - positive : positive;
+  const float negative = outer ? kPiF - positive : kHalfPiF + a;  // acos −|x|
+  return x < 0.0f ? negative : positive;
 }
 
 }  // namespace rc
