@@ -9,7 +9,7 @@ FresnelDielectric fresnelDielectric(float cosThetaI, float eta) {
   // Snell: cos²θt = 1 − (1 − cos²θi)·(ηti)²; negative means total internal reflection.
   const float cosThetaTSqr = 1.0f - (1.0f - cosThetaI * cosThetaI) * (etaTi * etaTi);
   const float cosI = std::fabs(cosThetaI);
-  const float cosT = std::sqrt(std::fmax(0.0f, cosThetaTSqr));
+  const float cosT = std::sqrt(fmaxInline(0.0f, cosThetaTSqr));
   const float aS = (cosI - etaIt * cosT) / (cosI + etaIt * cosT);
   const float aP = (cosT - etaIt * cosI) / (cosT + etaIt * cosI);
   float r = 0.5f * (aS * aS + aP * aP);
@@ -22,8 +22,8 @@ FresnelDielectric fresnelDielectric(float cosThetaI, float eta) {
 float fresnelConductor(float cosThetaI, float eta, float k) {
   const float c2 = cosThetaI * cosThetaI, s2 = 1.0f - c2, s4 = s2 * s2;
   const float temp1 = eta * eta - k * k - s2;
-  const float a2pb2 = std::sqrt(std::fmax(0.0f, temp1 * temp1 + 4.0f * k * k * eta * eta));
-  const float a = std::sqrt(std::fmax(0.0f, 0.5f * (a2pb2 + temp1)));
+  const float a2pb2 = std::sqrt(fmaxInline(0.0f, temp1 * temp1 + 4.0f * k * k * eta * eta));
+  const float a = std::sqrt(fmaxInline(0.0f, 0.5f * (a2pb2 + temp1)));
   const float term1 = a2pb2 + c2, term2 = 2.0f * cosThetaI * a;
   const float rS = (term1 - term2) / (term1 + term2);
   const float term3 = a2pb2 * c2 + s4, term4 = term2 * s2;

@@ -137,12 +137,12 @@ std::pair<Vec3, float> Microfacet::sample(const Vec3& wi, const Vec2& u) const {
     float cosTheta, pdf;
     if (type_ == MicrofacetType::Beckmann) {
       cosTheta = 1.0f / std::sqrt(1.0f - alpha2 * std::log(1.0f - u.x));
-      const float cos3 = std::fmax(cosTheta * cosTheta * cosTheta, 1e-20f);
+      const float cos3 = fmaxInline(cosTheta * cosTheta * cosTheta, 1e-20f);
       pdf = (1.0f - u.x) / (kPi * alphaU_ * alphaV_ * cos3);
     } else {
       const float tan2 = alpha2 * u.x / (1.0f - u.x);
       cosTheta = 1.0f / std::sqrt(1.0f + tan2);
-      const float temp = 1.0f + tan2 / alpha2, cos3 = std::fmax(cosTheta * cosTheta * cosTheta, 1e-20f);
+      const float temp = 1.0f + tan2 / alpha2, cos3 = fmaxInline(cosTheta * cosTheta * cosTheta, 1e-20f);
       pdf = 1.0f / (kPi * alphaU_ * alphaV_ * cos3 * temp * temp);
     }
     const float sinTheta = safeSqrt(1.0f - cosTheta * cosTheta);

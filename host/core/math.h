@@ -24,6 +24,13 @@ inline bool isFinite(const Color& c) { return std::isfinite(c.r) && std::isfinit
 // target GCC does not inline fmax, and the per-sample code calls it several times a vertex.
 inline float fmaxInline(float a, float b) { return (a > b || b != b) ? a : b; }
 inline float maxComponent(const Color& c) { return fmaxInline(c.r, fmaxInline(c.g, c.b)); }
+// static_cast<int>(std::floor(x)) for |x| < 2³¹ (the caller's range): on the baseline x86-64 target
+// (no SSE4.1 round) GCC expands std::floor into a dozen instructions, this is a truncation and a
+// compare.
+inline int floorToInt(float x) {
+  const int t = static_cast<int>(x);
+  return x < static_cast<float>(t) ? t - 1 : t;
+}
 // The largest coordinate magnitude of a point (the scale of its float rounding error).
 inline float maxAbs(const Vec3& p) { return std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}); }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/fast_trig.h"
 
 namespace rc {
 
@@ -14,11 +15,13 @@ Vec3 envDirection(float u, float v, float* sinTheta) {
   return Vec3(st * std::sin(phi), std::cos(theta), -st * std::cos(phi));
 }
 
+// Runs for every escaped ray (camera and BSDF-sampled): inline atan2 and acos (core/fast_trig.h)
+// instead of libm's calls, to within a few float ulps of them.
 Vec2 envUv(const Vec3& d) {
-  float u = std::atan2(d.x, -d.z) * (0.5f * kInvPi);
+  float u = atan2Fast(d.x, -d.z) * (0.5f * kInvPi);
   if (u < 0.0f) u += 1.0f;
   if (u >= 1.0f) u = 0.0f;
-  const float v = std::acos(glm::clamp(d.y, -1.0f, 1.0f)) * kInvPi;
+  const float v = acosFast(glm::clamp(d.y, -1.0f, 1.0f)) * kInvPi;
   return Vec2(u, v);
 }
 
@@ -67,15 +70,14 @@ Color EnvmapLight::eval(const Vec3& dirWorld) const { return bilinear(envUv(toLo
 Color EnvmapLight::bilinear(const Vec2& uv) const {
   const float fx = uv.x * width_ - 0.5f;  // texel x's centre at u = (x + 0.5) / W
   const float fy = uv.y * (height_ - 1);  // texel y's centre at v = y / (H − 1)
-  const float x0f = std::floor(fx);
-  const float tx = fx - x0f;
+  int x0 = floorToInt(fx);
+  const float tx = fx - static_cast<float>(x0);
   // Wrapped into [0, W): for u ∈ [0, 1], x0 ∈ [−1, W − 1] and one +W wraps it without an integer
   // division (a hot one); the remainder only for u outside [0, 1].
-  int x0 = static_cast<int>(x0f);
   if (x0 < 0) x0 += width_;
   if (x0 < 0 || x0 >= width_) x0 = (x0 % width_ + width_) % width_;
   const int x1 = x0 + 1 < width_ ? x0 + 1 : 0;
-  const int y0 = std::min(height_ - 2, std::max(0, static_cast<int>(std::floor(fy))));
+  const int y0 = std::min(height_ - 2, std::max(0, floorToInt(fy)));
   const float ty = glm::clamp(fy - y0, 0.0f, 1.0f);
   const Color top = (1.0f - tx) * texel(x0, y0) + tx * texel(x1, y0);
   const Color bottom = (1.0f - tx) * texel(x0, y0 + 1) + tx * texel(x1, y0 + 1);

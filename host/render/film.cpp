@@ -38,16 +38,12 @@ float ReconstructionFilter::eval(float x) const {
 
 namespace {
 
-// Calls add(ix, iy, weight) for every image pixel the sample at filmPos reaches (only those in
-// rows [rowBegin, rowEnd) where given).
+// The tent's and Gaussian's footprint (forEachFootprint's general case). Kept out of line: its
+// weight table and loops would otherwise give the box case (one pixel, weight 1) their stack
+// frame and register saves on every sample.
 template <typename Add>
-void forEachFootprint(const ReconstructionFilter& f, Vec2 pos, int w, int h, Add&& add, int rowBegin = 0,
-                      int rowEnd = std::numeric_limits<int>::max()) {
-  if (f.isBox()) {
-    const int ix = static_cast<int>(std::floor(pos.x)), iy = static_cast<int>(std::floor(pos.y));
-    if (ix >= 0 && iy >= std::max(0, rowBegin) && ix < w && iy < std::min(h, rowEnd)) add(ix, iy, 1.0f);
-    return;
-  }
+[[gnu::noinline]] void forEachFilteredFootprint(const ReconstructionFilter& f, Vec2 pos, int w, int h, Add&& add,
+                                                int rowBegin, int rowEnd) {
   const float r = f.radius();
   const int xa = std::max(0, static_cast<int>(std::ceil(pos.x - 0.5f - r)));
   const int xb = std::min(w - 1, static_cast<int>(std::floor(pos.x - 0.5f + r)));
@@ -63,6 +59,16 @@ void forEachFootprint(const ReconstructionFilter& f, Vec2 pos, int w, int h, Add
     for (int i = 0; i < nx; ++i)
       if (wx[i] > 0.0f) add(xa + i, iy, wx[i] * wy);
   }
+}
+
+// Calls add(ix, iy, weight) for every image pixel the sample at filmPos reaches (only those in
+// rows [rowBegin, rowEnd) where given).
+template <typename Add>
+void forEachFootprint(const ReconstructionFilter& f, Vec2 pos, int w, int h, Add&& add, int rowBegin = 0,
+                      int rowEnd = std::numeric_limits<int>::max()) {
+  if (!f.isBox()) return forEachFilteredFootprint(f, pos, w, h, add, rowBegin, rowEnd);
+  const int ix = floorToInt(pos.x), iy = floorToInt(pos.y);
+  if (ix >= 0 && iy >= std::max(0, rowBegin) && ix < w && iy < std::min(h, rowEnd)) add(ix, iy, 1.0f);
 }
 
 }  // namespace

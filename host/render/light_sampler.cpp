@@ -371,7 +371,15 @@ float LightSampler::pdf(const Hit& lightHit, const Vec3& from) const {
   return pSel * dist2 / (4.0f * kPi * r2 * cosL);
 }
 
-Color LightSampler::environment(const Vec3& dir) const { return impl_->environmentAt(dir).radiance; }
+Color LightSampler::environment(const Vec3& dir) const {
+  // Radiance alone (what an escaping camera ray needs): the envmaps' densities are not looked up.
+  Color radiance(0.0f);
+  for (int k : impl_->infinite) {
+    const Entry& e = impl_->entries[k];
+    radiance += e.type == EmitterType::Constant ? impl_->emitters[e.emitter].radiance : e.envmap->eval(dir);
+  }
+  return radiance;
+}
 float LightSampler::environmentPdf(const Vec3& dir) const { return impl_->environmentAt(dir).pdf; }
 LightSampler::EnvironmentLookup LightSampler::environmentLookup(const Vec3& dir) const {
   return impl_->environmentAt(dir);

@@ -29,22 +29,25 @@ void prepare(PathWave& w, size_t count) {
   fit(w.shadowValue, count);
   fit(w.shadowLane, count);
   fit(w.blocked, count);
+  fit(w.shadowOrder, count);
+  fit(w.octants, count);
   fit(w.waveRays, count);
   fit(w.waveHits, count);
 }
 
-// Orders the active lanes by the octant of their ray direction (a stable counting sort), so that a
-// packet's rays share the order in which they visit the BVH's children.
-void sortByOctant(PathWave& w, size_t live) {
+// Writes the ids id(0) … id(n − 1) to out ordered by the octant of their direction dir(id) (a stable
+// counting sort), so that a packet's rays share the order in which they visit the BVH's children.
+// `octants` holds n bytes of scratch.
+template <class Id, class Dir>
+void orderByOctant(size_t n, const Id& id, const Dir& dir, uint8_t* octants, uint32_t* out) {
   size_t start[9] = {0};
-  auto octant = [&](uint32_t i) {
-    const Vec3& d = w.rays[i].d;
-    return (d.x < 0.0f ? 1 : 0) | (d.y < 0.0f ? 2 : 0) | (d.z < 0.0f ? 4 : 0);
-  };
-  for (size_t k = 0; k < live; ++k) ++start[octant(w.active[k]) + 1];
+  for (size_t k = 0; k < n; ++k) {
+    const Vec3& d = dir(id(k));
+    octants[k] = static_cast<uint8_t>((d.x < 0.0f ? 1 : 0) | (d.y < 0.0f ? 2 : 0) | (d.z < 0.0f ? 4 : 0));
+    ++start[octants[k] + 1];
+  }
   for (int o = 0; o < 8; ++o) start[o + 1] += start[o];
-  for (size_t k = 0; k < live; ++k) w.next[start[octant(w.active[k])]++] = w.active[k];
-  std::swap(w.active, w.next);
+  for (size_t k = 0; k < n; ++k) out[start[octants[k]]++] = id(k);
 }
 
 // The lanes' state at their camera rays.
@@ -153,7 +156,9 @@ void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& setti
     // This bounce's segments: the camera rays' hits are given; later ones go to the BVH together.
     const Hit* hits = cameraHits;
     if (depth > 0) {
-      sortByOctant(w, live);
+      orderByOctant(live, [&](size_t k) { return w.active[k]; }, [&](uint32_t i) -> const Vec3& { return w.rays[i].d; },
+                    w.octants.data(), w.next.data());
+      std::swap(w.active, w.next);
       for (size_t k = 0; k < live; ++k) w.waveRays[k] = w.rays[w.active[k]];
       ctx.accel.intersectBatch(w.waveRays.data(), w.waveHits.data(), live, query);
       hits = w.waveHits.data();
@@ -161,11 +166,17 @@ void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& setti
     BounceShader shader(ctx, settings, rngs, w, depth);
     for (size_t k = 0; k < live; ++k) shader.shade(w.active[k], hits[depth == 0 ? w.active[k] : k]);
     // Each lane has at most one shadow ray per bounce, added before the next bounce's emission:
-    // the same order of additions as pathRadiance.
-    if (shader.shadows > 0) {
-      ctx.accel.occludedBatch(w.shadowRays.data(), w.blocked.data(), shader.shadows, query);
-      for (size_t s = 0; s < shader.shadows; ++s)
-        if (!w.blocked[s]) w.radiance[w.shadowLane[s]] += w.shadowValue[s];
+    // the same order of additions as pathRadiance, whatever the order in which the rays are traced.
+    // They go to the BVH ordered by octant too (the bounce's rays and hits are no longer needed,
+    // so waveRays holds them).
+    if (const size_t shadows = shader.shadows; shadows > 0) {
+      orderByOctant(shadows, [](size_t k) { return static_cast<uint32_t>(k); },
+                    [&](uint32_t s) -> const Vec3& { return w.shadowRays[s].d; }, w.octants.data(),
+                    w.shadowOrder.data());
+      for (size_t j = 0; j < shadows; ++j) w.waveRays[j] = w.shadowRays[w.shadowOrder[j]];
+      ctx.accel.occludedBatch(w.waveRays.data(), w.blocked.data(), shadows, query);
+      for (size_t j = 0; j < shadows; ++j)
+        if (!w.blocked[j]) w.radiance[w.shadowLane[w.shadowOrder[j]]] += w.shadowValue[w.shadowOrder[j]];
     }
     std::swap(w.active, w.next);
     live = shader.survivors;

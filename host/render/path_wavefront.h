@@ -29,7 +29,9 @@ struct PathWave {
   std::vector<Ray> shadowRays;
   std::vector<Color> shadowValue;
   std::vector<uint32_t> shadowLane;
-  std::vector<uint8_t> blocked;
+  std::vector<uint32_t> shadowOrder;  // the shadow rays in the order they are traced
+  std::vector<uint8_t> blocked;       // per traced shadow ray (in shadowOrder)
+  std::vector<uint8_t> octants;       // scratch of orderByOctant
   std::vector<Ray> waveRays;  // gathered rays of the active lanes
   std::vector<Hit> waveHits;
 };

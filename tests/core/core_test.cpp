@@ -228,3 +228,16 @@ TEST(AtomicFile, WritesWholeFileOrNothing) {
   EXPECT_EQ(text, "{\"a\": 1}\n");
   EXPECT_THROW(writeFileAtomically("/nonexistent-dir/x.json", "x"), Error);
 }
+
+// floorToInt is static_cast<int>(std::floor(x)) (the per-sample code relies on the same results):
+// integers, just below and above them, negatives, and the halves a box filter's pixel edges give.
+TEST(Math, FloorToIntIsFloor) {
+  for (float x : {0.0f, -0.0f, 1.0f, -1.0f, 0.5f, -0.5f, 1e-7f, -1e-7f, 0.99999994f, -0.99999994f, 255.5f, -3.25f,
+                  1048575.9f, -1048575.9f, 8388607.5f, -8388607.5f, 2.0e9f, -2.0e9f})
+    EXPECT_EQ(floorToInt(x), static_cast<int>(std::floor(x))) << x;
+  Rng rng(3);
+  for (int i = 0; i < 100000; ++i) {
+    const float x = (rng.nextFloat() - 0.5f) * 4096.0f;
+    ASSERT_EQ(floorToInt(x), static_cast<int>(std::floor(x))) << x;
+  }
+}

@@ -92,6 +92,27 @@ TEST(LightSampler, EnvironmentPdfIntegratesToItsSelectionProbability) {
   EXPECT_GT(frac, 0.01);
 }
 
+// environment() (radiance alone, for escaping camera rays) is environmentLookup()'s radiance bit for
+// bit, with an envmap and a constant emitter summed in entry order.
+TEST(LightSampler, EnvironmentIsTheLookupsRadianceExactly) {
+  Scene s = litFloor(test::diffuse(Color(0.5f)));
+  Emitter constant;
+  constant.type = EmitterType::Constant;
+  constant.radiance = Color(0.1f, 0.2f, 0.3f);
+  test::addEmitter(s, constant);
+  const test::World w(std::move(s));
+  Rng rng(5);
+  for (int i = 0; i < 10000; ++i) {
+    const float z = 1 - 2 * rng.nextFloat(), phi = 2 * kPi * rng.nextFloat(), r = std::sqrt(std::max(0.0f, 1 - z * z));
+    const Vec3 d(r * std::cos(phi), r * std::sin(phi), z);
+    const Color a = w.lights->environment(d), b = w.lights->environmentLookup(d).radiance;
+    ASSERT_EQ(a.r, b.r);
+    ASSERT_EQ(a.g, b.g);
+    ASSERT_EQ(a.b, b.b);
+    ASSERT_GT(a.r, 0.1f);  // both emitters reached
+  }
+}
+
 using test::Stat;
 
 // The MIS estimator (light + BSDF sampling) is unbiased: it matches pure BSDF sampling (which
