@@ -115,6 +115,12 @@ std::pair<Vec3, Vec3> triangleUvPartials(const Mesh& mesh, const glm::uvec3& tri
   return finite(dpdu) && finite(dpdv) ? std::make_pair(dpdu, dpdv) : none;
 }
 
+// Sets table[id] (a table indexed by Embree geomID, −1 where it does not apply) to index.
+void mapGeometry(std::vector<int>& table, unsigned id, int index) {
+  if (table.size() <= id) table.resize(id + 1, -1);
+  table[id] = index;
+}
+
 TriangleConstants triangleConstants(const Mesh& mesh) {
   TriangleConstants c;
   c.faceNormal.resize(mesh.triangles.size());
@@ -235,17 +241,15 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
   for (size_t c = 0; c < scene.curves.size(); ++c) {
     const unsigned id = attachCurve(im.device, im.scene, scene.curves[c]);
     im.check(("curve '" + scene.curves[c].name + "'").c_str());
-    if (im.geomToMesh.size() <= id) im.geomToMesh.resize(id + 1, -1);
-    if (im.geomToCurve.size() <= id) im.geomToCurve.resize(id + 1, -1);
-    im.geomToCurve[id] = static_cast<int>(c);
+    mapGeometry(im.geomToMesh, id, -1);
+    mapGeometry(im.geomToCurve, id, static_cast<int>(c));
   }
 
   for (size_t g = 0; g < scene.sdfGrids.size(); ++g) {
     const unsigned id = attachSdfGrid(im.device, im.scene, scene.sdfGrids[g]);
     im.check(("sdfgrid '" + scene.sdfGrids[g].name + "'").c_str());
-    if (im.geomToMesh.size() <= id) im.geomToMesh.resize(id + 1, -1);
-    if (im.geomToSdfGrid.size() <= id) im.geomToSdfGrid.resize(id + 1, -1);
-    im.geomToSdfGrid[id] = static_cast<int>(g);
+    mapGeometry(im.geomToMesh, id, -1);
+    mapGeometry(im.geomToSdfGrid, id, static_cast<int>(g));
   }
 
   rtcCommitScene(im.scene);

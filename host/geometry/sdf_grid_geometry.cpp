@@ -35,8 +35,7 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
   b->upper_x = hi.x + pad.x; b->upper_y = hi.y + pad.y; b->upper_z = hi.z + pad.z;
 }
 
-template <class Ray>
-bool hitOfLane(const SdfGrid& grid, unsigned prim, Ray* ray, unsigned N, unsigned i, float& t) {
+bool hitOfLane(const SdfGrid& grid, unsigned prim, RTCRayN* ray, unsigned N, unsigned i, float& t) {
   // In object space t is unchanged (the direction is transformed, not normalised).
   const glm::dmat4 m(grid.toObject);
   const glm::dvec3 o(RTCRayN_org_x(ray, N, i), RTCRayN_org_y(ray, N, i), RTCRayN_org_z(ray, N, i));
@@ -50,27 +49,15 @@ bool hitOfLane(const SdfGrid& grid, unsigned prim, Ray* ray, unsigned N, unsigne
   return t >= RTCRayN_tnear(ray, N, i) && t <= RTCRayN_tfar(ray, N, i);
 }
 
+// The Hit is rebuilt from the point (sdfHitGeometry).
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   const SdfGrid& grid = gridOf(args->geometryUserPtr);
-  const unsigned N = args->N;
-  RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, N);
-  RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, N);
-  for (unsigned i = 0; i < N; ++i) {
-    if (args->valid[i] != -1) continue;
-    float t;
-    if (!hitOfLane(grid, args->primID, ray, N, i, t)) continue;
-    recordUserHit(args, ray, hit, i, t, Vec3(0.0f, 0.0f, 1.0f));  // the Hit is rebuilt from the point (sdfHitGeometry)
-  }
+  intersectLanes(args, [&](RTCRayN* ray, unsigned N, unsigned i, float& t) { return hitOfLane(grid, args->primID, ray, N, i, t); });
 }
 
 void occludedCallback(const RTCOccludedFunctionNArguments* args) {
   const SdfGrid& grid = gridOf(args->geometryUserPtr);
-  const unsigned N = args->N;
-  for (unsigned i = 0; i < N; ++i) {
-    if (args->valid[i] != -1) continue;
-    float t;
-    if (hitOfLane(grid, args->primID, args->ray, N, i, t)) RTCRayN_tfar(args->ray, N, i) = -INFINITY;
-  }
+  occludeLanes(args, [&](RTCRayN* ray, unsigned N, unsigned i, float& t) { return hitOfLane(grid, args->primID, ray, N, i, t); });
 }
 
 }  // namespace

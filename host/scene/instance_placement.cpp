@@ -9,8 +9,7 @@ namespace rc {
 
 namespace {
 
-Mesh placedMesh(const Mesh& m, const Mat4& toWorld, const Mat3& normalMatrix, bool mirrored) {
-  Mesh p = m;
+void placeMesh(Mesh& p, const Mat4& toWorld, const Mat3& normalMatrix, bool mirrored) {
   for (Vec3& v : p.positions) v = Vec3(toWorld * Vec4(v, 1.0f));
   for (Vec3& n : p.normals) {
     const Vec3 w = normalMatrix * n;
@@ -21,7 +20,24 @@ Mesh placedMesh(const Mesh& m, const Mat4& toWorld, const Mat3& normalMatrix, bo
   if (mirrored)
     for (glm::uvec3& t : p.triangles) std::swap(t.y, t.z);
   p.emitter = -1;
-  return p;
+}
+
+// Copies every shape of `from` into `into`, placed by `place` and renamed with the suffix.
+template <class Shape, class Place>
+void placeAll(const std::vector<Shape>& from, std::vector<Shape>& into, const std::string& suffix, const Place& place) {
+  for (const Shape& shape : from) {
+    Shape copy = shape;
+    place(copy);
+    copy.name += suffix;
+    into.push_back(std::move(copy));
+  }
+}
+
+// Spheres and curves stay round only under a similarity.
+void requireRound(bool keepsRound, const std::string& what, const std::string& name, const std::string& consequence) {
+  if (!keepsRound)
+    throw Error("the instance's to_world is not a rotation with a uniform scale, which would make " + what + " '" +
+                name + "' " + consequence);
 }
 
 }  // namespace
@@ -34,47 +50,28 @@ void placeInstance(const ShapeLists& group, const Mat4& toWorld, const std::stri
   float scale = 1.0f;
   const bool keepsRound = similarity(toWorld, scale);
 
-  for (const Mesh& m : group.meshes) {
-    into.meshes.push_back(placedMesh(m, toWorld, normalMatrix, mirrored));
-    into.meshes.back().name += suffix;
-  }
-  for (const Sphere& s : group.spheres) {
-    if (!keepsRound)
-      throw Error("the instance's to_world turns sphere '" + s.name +
-                  "' into an ellipsoid, which rcache does not render (use a mesh)");
-    Sphere p = s;
-    p.center = Vec3(toWorld * Vec4(s.center, 1.0f));
-    p.radius = s.radius * scale;
-    p.emitter = -1;
-    p.name += suffix;
-    into.spheres.push_back(std::move(p));
-  }
-  for (const Cylinder& c : group.cylinders) {
-    Cylinder p = c;
-    p.toWorld = toWorld * c.toWorld;
-    p.toObject = glm::inverse(p.toWorld);
+  placeAll(group.meshes, into.meshes, suffix, [&](Mesh& m) { placeMesh(m, toWorld, normalMatrix, mirrored); });
+  placeAll(group.spheres, into.spheres, suffix, [&](Sphere& s) {
+    requireRound(keepsRound, "sphere", s.name, "an ellipsoid, which rcache does not render (use a mesh)");
+    s.center = Vec3(toWorld * Vec4(s.center, 1.0f));
+    s.radius *= scale;
+    s.emitter = -1;
+  });
+  placeAll(group.cylinders, into.cylinders, suffix, [&](Cylinder& c) {
+    c.toWorld = toWorld * c.toWorld;
+    c.toObject = glm::inverse(c.toWorld);
     // geometry/cylinder_geometry's normal is cross(dp/du, dp/dv), which a mirror turns against
     // the inverse-transposed normal Mitsuba's instance gives.
-    p.flipNormals = c.flipNormals != mirrored;
-    p.name += suffix;
-    into.cylinders.push_back(std::move(p));
-  }
-  for (const Curve& c : group.curves) {
-    if (!keepsRound)
-      throw Error("the instance's to_world scales curve '" + c.name +
-                  "' non-uniformly, which would make its tube elliptical (rcache's curves are round)");
-    Curve p = c;
-    for (Vec4& q : p.points) q = Vec4(Vec3(toWorld * Vec4(Vec3(q), 1.0f)), q.w * scale);
-    p.name += suffix;
-    into.curves.push_back(std::move(p));
-  }
-  for (const SdfGrid& g : group.sdfGrids) {
-    SdfGrid p = g;
-    p.toWorld = toWorld * g.toWorld;
-    p.toObject = glm::inverse(p.toWorld);
-    p.name += suffix;
-    into.sdfGrids.push_back(std::move(p));
-  }
+    c.flipNormals = c.flipNormals != mirrored;
+  });
+  placeAll(group.curves, into.curves, suffix, [&](Curve& c) {
+    requireRound(keepsRound, "curve", c.name, "an elliptical tube (rcache's curves are round)");
+    for (Vec4& q : c.points) q = Vec4(Vec3(toWorld * Vec4(Vec3(q), 1.0f)), q.w * scale);
+  });
+  placeAll(group.sdfGrids, into.sdfGrids, suffix, [&](SdfGrid& g) {
+    g.toWorld = toWorld * g.toWorld;
+    g.toObject = glm::inverse(g.toWorld);
+  });
 }
 
 size_t instancePrimitives(const ShapeLists& group) {
