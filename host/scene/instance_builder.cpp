@@ -10,10 +10,11 @@ namespace rc {
 
 namespace {
 
-// The primitives all instances together may place: copies cost memory per instance (about 100
-// bytes a triangle), so a small file naming one large group many times is stopped here, before
-// the copies are made, rather than by the allocator.
-constexpr size_t kMaxInstancedPrimitives = size_t(1) << 27;
+// The primitives all instances together may place: each copy costs memory per primitive (its
+// geometry, or for an sdfgrid its voxels' BVH leaves; bench/RESULTS.md "sdfgrid and instances"),
+// so a small file naming one large group many times is stopped here, before the copies are made,
+// rather than by the allocator. 2^25 is a few GB.
+constexpr size_t kMaxInstancedPrimitives = size_t(1) << 25;
 
 }  // namespace
 

@@ -163,6 +163,18 @@ TEST(Instance, WhatMitsubaRefusesIsAnErrorWithFileAndLine) {
               {"scene.xml:4:", "ellipsoid"});
 }
 
+TEST(Instance, TheCopiesAreBoundedBeforeTheyAreMade) {
+  // 2^18 occupied voxels (signs alternate, so every voxel changes sign) shared by every copy: the
+  // 129th instance would pass 2^25 primitives in all.
+  TempDir dir;
+  dir.write("g.vol", volGrid(65, 65, 65, [](int i, int j, int k) { return (i + j + k) % 2 ? 1.0f : -1.0f; }));
+  std::string xml = "<shape type=\"shapegroup\" id=\"g\"><shape type=\"sdfgrid\"><string name=\"filename\" value=\"g.vol\"/></shape></shape>";
+  for (int i = 0; i < 128; ++i) xml += "<shape type=\"instance\"><ref id=\"g\"/></shape>";
+  EXPECT_EQ(loadText(dir, sceneXml(xml)).sdfGrids.size(), 128u);
+  expectError([&] { loadText(dir, sceneXml(xml + "\n<shape type=\"instance\"><ref id=\"g\"/></shape>")); },
+              {"scene.xml:4:", "more than 33554432 primitives"});
+}
+
 TEST(SdfGridLoad, MalformedGridsAndParametersAreErrors) {
   TempDir dir;
   auto sdf = [&](const std::string& bytes, const std::string& params = "") {
