@@ -4,6 +4,7 @@
 // twice. An instance of a mesh group renders as the same mesh placed by hand.
 #include <gtest/gtest.h>
 
+#include "cache/cache_file.h"
 #include "common/vol_file_bytes.h"
 #include "scene/scene_test_util.h"
 #include "test_scene.h"
@@ -71,6 +72,23 @@ TEST(SdfGridRender, InstanceRendersAsTheMeshPlacedByHand) {
     // Within float error: the normals alone were rounded along another path (relative 1e-7).
     EXPECT_LT(worst, 1e-4f) << name;
   }
+}
+
+TEST(SdfGridRender, CacheFilesKnowTheGrid) {
+  // A saved cache holds radiance of one geometry: its scene hash must change with the grid's
+  // samples, normals and placement.
+  test::TempDir dir;
+  auto hashOf = [&](float offset, const std::string& params) {
+    dir.write("g.vol", test::volGrid(3, 3, 3, [&](int i, int, int) { return i - 0.9f + offset; }));
+    const Scene s = test::loadText(dir, test::sceneXml("<shape type=\"sdfgrid\"><string name=\"filename\" value=\"g.vol\"/>" +
+                                                       params + "</shape>"));
+    return cacheSceneHash(s, -1, false);
+  };
+  const uint64_t base = hashOf(0.0f, "");
+  EXPECT_EQ(hashOf(0.0f, ""), base);
+  EXPECT_NE(hashOf(0.1f, ""), base);
+  EXPECT_NE(hashOf(0.0f, "<string name=\"normals\" value=\"analytic\"/>"), base);
+  EXPECT_NE(hashOf(0.0f, "<transform name=\"to_world\"><translate x=\"1\"/></transform>"), base);
 }
 
 }  // namespace
