@@ -73,6 +73,13 @@ uint64_t cacheSceneHash(const Scene& scene, int maxDepth, bool tlMode) {
     const int ids[2] = {c.bsdf, static_cast<int>(c.basis)};
     h = fnv1a64(ids, sizeof(ids), h);
   }
+  for (const SdfGrid& g : scene.sdfGrids) {
+    h = fnv1a64(g.res, sizeof(g.res), h);
+    hashFloats(h, g.values->data(), g.values->size());
+    hashFloats(h, &g.toWorld[0][0], 16);
+    const int ids[2] = {g.bsdf, g.smoothNormals ? 1 : 0};
+    h = fnv1a64(ids, sizeof(ids), h);
+  }
   for (const auto& b : scene.bsdfs) {
     const std::string key = b->parameterKey();
     h = fnv1a64(key.data(), key.size(), h);

@@ -1,6 +1,6 @@
 // Embree 3 scene: one triangle geometry per mesh, one user geometry holding every analytic sphere,
 // one holding every cylinder (geometry/cylinder_geometry.h), one round-curve geometry per curve
-// shape (geometry/curve_geometry.h).
+// shape (geometry/curve_geometry.h), one user geometry per sdfgrid (geometry/sdf_grid_geometry.h).
 #include "geometry/accel.h"
 
 #include <embree3/rtcore.h>
@@ -20,6 +20,8 @@
 #include "geometry/embree_attach.h"
 #include "geometry/face_normal.h"
 #include "geometry/ray_counter.h"
+#include "geometry/sdf_grid_geometry.h"
+#include "geometry/sdf_grid_math.h"
 #include "geometry/sphere_intersect.h"
 #include "geometry/user_geometry_hit.h"
 
@@ -113,6 +115,12 @@ std::pair<Vec3, Vec3> triangleUvPartials(const Mesh& mesh, const glm::uvec3& tri
   return finite(dpdu) && finite(dpdv) ? std::make_pair(dpdu, dpdv) : none;
 }
 
+// Sets table[id] (a table indexed by Embree geomID, −1 where it does not apply) to index.
+void mapGeometry(std::vector<int>& table, unsigned id, int index) {
+  if (table.size() <= id) table.resize(id + 1, -1);
+  table[id] = index;
+}
+
 TriangleConstants triangleConstants(const Mesh& mesh) {
   TriangleConstants c;
   c.faceNormal.resize(mesh.triangles.size());
@@ -132,6 +140,7 @@ struct Accel::Impl {
   RTCScene scene = nullptr;
   std::vector<int> geomToMesh;  // Embree geomID → mesh index, −1 for the sphere geometry
   std::vector<int> geomToCurve;  // Embree geomID → curve index, −1 for other geometry
+  std::vector<int> geomToSdfGrid;  // Embree geomID → sdfgrid index, −1 for other geometry
   std::vector<TriangleConstants> meshConstants;  // per mesh (empty for meshes not in the BVH)
   unsigned sphereGeom = RTC_INVALID_GEOMETRY_ID;
   unsigned cylinderGeom = RTC_INVALID_GEOMETRY_ID;
@@ -232,9 +241,15 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
   for (size_t c = 0; c < scene.curves.size(); ++c) {
     const unsigned id = attachCurve(im.device, im.scene, scene.curves[c]);
     im.check(("curve '" + scene.curves[c].name + "'").c_str());
-    if (im.geomToMesh.size() <= id) im.geomToMesh.resize(id + 1, -1);
-    if (im.geomToCurve.size() <= id) im.geomToCurve.resize(id + 1, -1);
-    im.geomToCurve[id] = static_cast<int>(c);
+    mapGeometry(im.geomToMesh, id, -1);
+    mapGeometry(im.geomToCurve, id, static_cast<int>(c));
+  }
+
+  for (size_t g = 0; g < scene.sdfGrids.size(); ++g) {
+    const unsigned id = attachSdfGrid(im.device, im.scene, scene.sdfGrids[g]);
+    im.check(("sdfgrid '" + scene.sdfGrids[g].name + "'").c_str());
+    mapGeometry(im.geomToMesh, id, -1);
+    mapGeometry(im.geomToSdfGrid, id, static_cast<int>(g));
   }
 
   rtcCommitScene(im.scene);
@@ -355,6 +370,22 @@ Hit curveHit(const Curve& c, int index, const Ray& ray, unsigned prim, float u, 
   return h;
 }
 
+// The point is o + t·d, as on curves (t is the interpolant's root to double precision); prim is
+// the voxel's index in the grid.
+Hit sdfGridHit(const SdfGrid& g, const Ray& ray, unsigned prim, float t) {
+  Hit h;
+  h.t = t;
+  h.prim = static_cast<int>((*g.voxels)[prim]);
+  h.bsdf = g.bsdf;
+  h.p = ray.o + t * ray.d;
+  h.uv.position = h.p;
+  h.pError = kPointErrorUlps * kFloatEps * (maxAbs(ray.o) + t * maxAbs(ray.d));
+  const SdfHitGeometry geometry = sdfHitGeometry(g, sdfVoxelCoords(g, (*g.voxels)[prim]), h.p);
+  h.ng = geometry.ng;
+  h.ns = geometry.ns;
+  return h;
+}
+
 }  // namespace
 
 namespace {
@@ -379,6 +410,8 @@ Hit Accel::hitOf(const Ray& ray, unsigned geomID, unsigned primID, float u, floa
     const int c = impl_->geomToCurve[geomID];
     return curveHit(scene_.curves[c], c, ray, primID, u, tfar);
   }
+  if (geomID < impl_->geomToSdfGrid.size() && impl_->geomToSdfGrid[geomID] >= 0)
+    return sdfGridHit(scene_.sdfGrids[impl_->geomToSdfGrid[geomID]], ray, primID, tfar);
   const int m = impl_->geomToMesh[geomID];
   return triangleHit(scene_.meshes[m], impl_->meshConstants[m], m, primID, u, v, tfar);
 }

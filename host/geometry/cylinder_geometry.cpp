@@ -81,34 +81,21 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
   b->upper_x = hi.x + pad.x; b->upper_y = hi.y + pad.y; b->upper_z = hi.z + pad.z;
 }
 
-template <class Ray>
-bool hitOfLane(const Cylinder& c, Ray* ray, unsigned N, unsigned i, float& t) {
+bool hitOfLane(const Cylinder& c, RTCRayN* ray, unsigned N, unsigned i, float& t) {
   const Vec3 o(RTCRayN_org_x(ray, N, i), RTCRayN_org_y(ray, N, i), RTCRayN_org_z(ray, N, i));
   const Vec3 d(RTCRayN_dir_x(ray, N, i), RTCRayN_dir_y(ray, N, i), RTCRayN_dir_z(ray, N, i));
   return intersectCylinder(c, o, d, RTCRayN_tnear(ray, N, i), RTCRayN_tfar(ray, N, i), t);
 }
 
+// The Hit is rebuilt from the point (cylinderHitGeometry).
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   const Cylinder& c = cylindersOf(args->geometryUserPtr)[args->primID];
-  const unsigned N = args->N;
-  RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, N);
-  RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, N);
-  for (unsigned i = 0; i < N; ++i) {
-    if (args->valid[i] != -1) continue;
-    float t;
-    if (!hitOfLane(c, ray, N, i, t)) continue;
-    recordUserHit(args, ray, hit, i, t, Vec3(0.0f, 0.0f, 1.0f));  // the Hit is rebuilt from the point (cylinderHitGeometry)
-  }
+  intersectLanes(args, [&](RTCRayN* ray, unsigned N, unsigned i, float& t) { return hitOfLane(c, ray, N, i, t); });
 }
 
 void occludedCallback(const RTCOccludedFunctionNArguments* args) {
   const Cylinder& c = cylindersOf(args->geometryUserPtr)[args->primID];
-  const unsigned N = args->N;
-  for (unsigned i = 0; i < N; ++i) {
-    if (args->valid[i] != -1) continue;
-    float t;
-    if (hitOfLane(c, args->ray, N, i, t)) RTCRayN_tfar(args->ray, N, i) = -INFINITY;
-  }
+  occludeLanes(args, [&](RTCRayN* ray, unsigned N, unsigned i, float& t) { return hitOfLane(c, ray, N, i, t); });
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include "geometry/curve_geometry.h"
 #include "geometry/cylinder_geometry.h"
+#include "geometry/sdf_grid_geometry.h"
 
 namespace rc {
 
@@ -39,6 +40,10 @@ void finiteSceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
   }
   for (const Curve& c : scene.curves) {
     curveBounds(c, a, b);
+    addBox(a, b);
+  }
+  for (const SdfGrid& g : scene.sdfGrids) {
+    sdfGridBounds(g, a, b);
     addBox(a, b);
   }
   if (!(lo.x <= hi.x) || !finite(hi - lo)) {

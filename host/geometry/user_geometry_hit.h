@@ -1,6 +1,7 @@
 #pragma once
-// One definition of how an Embree user-geometry callback (spheres, cylinders) records a hit of
-// lane i: the ray's tfar, the geometric normal Embree hands back, no barycentrics, and the ids.
+// One definition of how an Embree user-geometry callback (spheres, cylinders, sdfgrids) records a
+// hit of lane i: the ray's tfar, the geometric normal Embree hands back, no barycentrics, and the
+// ids; and the lane loops of the callbacks whose Hit is rebuilt later from the point alone.
 #include <embree3/rtcore.h>
 
 #include "core/math.h"
@@ -19,6 +20,31 @@ inline void recordUserHit(const RTCIntersectFunctionNArguments* args, RTCRayN* r
   RTCHitN_primID(hit, N, i) = args->primID;
   RTCHitN_geomID(hit, N, i) = args->geomID;
   RTCHitN_instID(hit, N, i, 0) = args->context->instID[0];
+}
+
+// The intersect callback's loop: lane i (if valid) is hit where laneHit(ray, N, i, t) finds t in
+// the ray's [tnear, tfar]; the normal handed to Embree is a placeholder (Accel rebuilds the Hit).
+template <class LaneHit>
+void intersectLanes(const RTCIntersectFunctionNArguments* args, const LaneHit& laneHit) {
+  const unsigned N = args->N;
+  RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, N);
+  RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, N);
+  for (unsigned i = 0; i < N; ++i) {
+    if (args->valid[i] != -1) continue;
+    float t;
+    if (laneHit(ray, N, i, t)) recordUserHit(args, ray, hit, i, t, Vec3(0.0f, 0.0f, 1.0f));
+  }
+}
+
+// The occluded callback's loop: Embree marks a blocked lane by tfar = −∞.
+template <class LaneHit>
+void occludeLanes(const RTCOccludedFunctionNArguments* args, const LaneHit& laneHit) {
+  const unsigned N = args->N;
+  for (unsigned i = 0; i < N; ++i) {
+    if (args->valid[i] != -1) continue;
+    float t;
+    if (laneHit(args->ray, N, i, t)) RTCRayN_tfar(args->ray, N, i) = -INFINITY;
+  }
 }
 
 }  // namespace rc

@@ -37,7 +37,7 @@ class Loader {
   std::string anonymousName(const std::string& type);  // "<type>#<n>"
 
   // Objects with an id, for <ref id> and duplicate detection.
-  enum class Kind { Bsdf, Emitter, Texture, Shape, Sampler, Medium, Volume, Other };
+  enum class Kind { Bsdf, Emitter, Texture, Shape, ShapeGroup, Sampler, Medium, Volume, Other };
   struct Named {
     Kind kind = Kind::Other;
     BsdfPtr bsdf;
@@ -45,6 +45,7 @@ class Loader {
     SamplerSettings sampler;  // Kind::Sampler: the settings a sensor referring to it takes
     int medium = -1;          // Kind::Medium: index into Scene::media
     VolumePtr volume;         // Kind::Volume
+    int shapeGroup = -1;      // Kind::ShapeGroup: index into the loader's shape groups
     std::string where;
   };
   // Registers e's id (an element without one gets a placeholder entry nobody can refer to).
@@ -59,7 +60,7 @@ class Loader {
   // an area emitter (src/render/shape.cpp), so an emitter does not also reflect.
   BsdfPtr defaultBsdf(bool emitterShape = false);
   TexturePtr buildTexture(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
-  int bsdfIndex(const BsdfPtr& bsdf);
+  int bsdfIndex(const BsdfPtr& bsdf);  // index into scene_.bsdfs, adding it on first use
   // Media and volumes (medium_builder.cpp, volume_builder.cpp). buildMedium returns its index in
   // Scene::media; mediumOf reads a nested <medium> or a <ref> to one.
   int buildMedium(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
@@ -67,8 +68,15 @@ class Loader {
   VolumePtr buildVolume(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
   // A parameter that may be a float, an rgb or a nested volume (`nested`: name → built volume).
   VolumePtr volumeParameter(const Element& e, const std::string& name, const Color& fallback,
-                            const std::map<std::string, VolumePtr>& nested) const;  // index into scene_.bsdfs, adding it on first use
+                            const std::map<std::string, VolumePtr>& nested) const;
   void buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
+  // One shape into `into` (the scene, or the shapegroup `group` that holds it: then emitters and
+  // nested groups or instances are errors, as in Mitsuba).
+  void buildShapeInto(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node, ShapeLists& into,
+                      const Element* group);
+  // <shape type="shapegroup"> (returns its index) and <shape type="instance"> (instance_builder.cpp).
+  int buildShapeGroup(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
+  void buildInstance(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
   // Top-level emitters (shapeMesh = shapeSphere = -1) and area emitters of a shape.
   void buildEmitter(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node, int shapeMesh, int shapeSphere);
   void buildSensor(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node);
@@ -126,6 +134,8 @@ class Loader {
   void applyBsdfTextures(const std::shared_ptr<XmlFile>& file, Element& e,
                          const std::vector<std::pair<pugi::xml_node, TexturePtr>>& textures, TexturePtr& factor,
                          BsdfTextures& perPoint);
+  std::vector<ShapeLists> shapeGroups_;  // in their own space; instances place copies in scene_
+  size_t instancedPrimitives_ = 0;       // what the instances have placed so far (bounded)
   std::map<std::string, int> anonymousCount_;
   int sensors_ = 0, integrators_ = 0, environments_ = 0;
   Scene scene_;

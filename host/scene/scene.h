@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -59,6 +60,34 @@ struct Curve {
   std::vector<Vec4> points;        // world-space position (to_world applied) and radius (never transformed)
   std::vector<uint32_t> segments;  // each segment's first control point
   int bsdf = -1;
+};
+
+// Mitsuba's `sdfgrid`: a signed distance sampled on a grid over the unit cube [0,1]³ of its
+// object space, sample (i, j, k) at (i/(nx−1), j/(ny−1), k/(nz−1)) (the corners of the voxels),
+// trilinearly interpolated; the surface is the interpolant's zero level set, hit only in the voxels
+// whose corner values change sign (geometry/sdf_grid_math.h). No uv, no area emitter (Mitsuba's
+// limitations too).
+struct SdfGrid {
+  std::string name;
+  uint32_t res[3] = {2, 2, 2};      // samples along x, y, z (each ≥ 2)
+  // Shared by the copies instances place (scene/instance_placement.h), which differ only in toWorld.
+  std::shared_ptr<const std::vector<float>> values;     // ((z·ny + y)·nx + x), the .vol file's order
+  std::shared_ptr<const std::vector<uint32_t>> voxels;  // the occupied voxels, x + (nx−1)·(y + (ny−1)·z)
+  Mat4 toWorld{1.0f};
+  Mat4 toObject{1.0f};              // inverse of toWorld
+  bool smoothNormals = true;        // `normals`: smooth (Hansson-Söderlund et al.) or analytic
+  int bsdf = -1;
+  float at(uint32_t x, uint32_t y, uint32_t z) const { return (*values)[(static_cast<size_t>(z) * res[1] + y) * res[0] + x]; }
+};
+
+// The shapes of a scene, or of a `shapegroup` (in the group's own space until an instance places
+// copies of them in the scene, scene/instance_placement.h).
+struct ShapeLists {
+  std::vector<Mesh> meshes;
+  std::vector<Sphere> spheres;
+  std::vector<Cylinder> cylinders;
+  std::vector<Curve> curves;
+  std::vector<SdfGrid> sdfGrids;
 };
 
 enum class EmitterType { Area, Point, Directional, Constant, Envmap, Spot, Projector };
@@ -137,13 +166,9 @@ struct SamplerSettings {
   uint64_t seed = 0;
 };
 
-struct Scene {
+struct Scene : ShapeLists {
   std::string sourceFile;
   std::vector<BsdfPtr> bsdfs;
-  std::vector<Mesh> meshes;
-  std::vector<Sphere> spheres;
-  std::vector<Cylinder> cylinders;
-  std::vector<Curve> curves;
   std::vector<Emitter> emitters;
   std::vector<Medium> media;  // participating media (scene/medium.h), referred to by index
   int cameraMedium = -1;      // the sensor's medium (Mitsuba's sensor `medium`), −1 for none

@@ -1,5 +1,6 @@
 // <shape>: obj, ply, serialized, rectangle, cube, disk as world-space meshes; sphere, cylinder,
-// linearcurve and bsplinecurve as analytic shapes.
+// linearcurve, bsplinecurve and sdfgrid as analytic shapes (shapegroup and instance:
+// instance_builder.cpp).
 #include <cmath>
 
 #include "core/frame.h"
@@ -8,28 +9,13 @@
 #include "scene/mesh_builder.h"
 #include "scene/obj_loader.h"
 #include "scene/ply_loader.h"
+#include "scene/sdf_grid_loader.h"
 #include "scene/serialized_loader.h"
+#include "scene/similarity_transform.h"
 
 namespace rc {
 
 namespace {
-
-// A sphere stays a sphere only under similarity transforms: the linear part must be a rotation
-// times a uniform scale and the projective row must be (0 0 0 1). Tolerance 1e-4 relative: far
-// above float rounding of composed rotate/scale ops (~1e-6), far below any intended anisotropy.
-bool similarity(const Mat4& m, float& scale) {
-  if (m[0][3] != 0.0f || m[1][3] != 0.0f || m[2][3] != 0.0f || m[3][3] != 1.0f) return false;
-  const Vec3 c[3] = {Vec3(m[0]), Vec3(m[1]), Vec3(m[2])};
-  const float s = glm::length(c[0]);
-  if (!(s > 0.0f)) return false;
-  for (int i = 0; i < 3; ++i) {
-    if (std::fabs(glm::length(c[i]) - s) > 1e-4f * s) return false;
-    for (int j = i + 1; j < 3; ++j)
-      if (std::fabs(glm::dot(c[i], c[j])) > 1e-4f * s * s) return false;
-  }
-  scale = s;
-  return true;
-}
 
 // The analytic sphere of a <shape type="sphere">, its center and radius taken to world space.
 Sphere makeSphere(const Element& e, const Mat4& toWorld, const std::string& name, bool flip, int material) {
@@ -109,6 +95,31 @@ Curve makeCurve(const Element& e, const Mat4& toWorld, const std::string& name, 
   return c;
 }
 
+// Mitsuba's sdfgrid. Parameters:
+//   filename   string     a single-channel .vol file (scene/sdf_grid_loader.h); its bounding box is
+//                         ignored: the grid spans the unit cube
+//   normals    string     smooth (default) | analytic (geometry/sdf_grid_math.h)
+//   to_world   transform  any invertible affine map (Mitsuba warns on rotations, which its tight
+//                         voxel boxes do not follow; rcache's boxes do)
+template <class Resolve>
+SdfGrid makeSdfGrid(const Element& e, const Mat4& toWorld, const std::string& name, int material, const Resolve& resolve) {
+  const std::string fn = e.located([&] { return e.props.getString("filename", ""); });
+  if (fn.empty()) e.fail("missing parameter 'filename' (the grid's .vol file)");
+  const std::string normals = e.located([&] { return e.props.getString("normals", "smooth"); });
+  if (normals != "smooth" && normals != "analytic")
+    e.failParam("normals", "'normals' must be 'smooth' or 'analytic', got '" + normals + "'");
+  const float det = glm::determinant(Mat3(toWorld));
+  if (!(std::fabs(det) > 0.0f) || !std::isfinite(det)) e.failParam("to_world", "the sdfgrid's to_world is singular");
+  const std::string path = resolve(fn);
+  SdfGrid g = e.located([&] { return loadSdfGrid(path); });
+  g.name = name;
+  g.toWorld = toWorld;
+  g.toObject = glm::inverse(toWorld);
+  g.smoothNormals = normals == "smooth";
+  g.bsdf = material;
+  return g;
+}
+
 // The object-space triangles of a mesh shape, loaded from its file or generated; sets the
 // policy's face_normals where the type takes it. `resolve` turns the filename into a path.
 template <class Resolve>
@@ -144,12 +155,22 @@ MeshData shapeMeshData(const Element& e, MeshPolicy& policy, const Resolve& reso
 }  // namespace
 
 void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
+  const std::string type = node.attribute("type").value();
+  if (type == "shapegroup") buildShapeGroup(file, node);
+  else if (type == "instance") buildInstance(file, node);
+  else buildShapeInto(file, node, scene_, nullptr);
+}
+
+void Loader::buildShapeInto(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node, ShapeLists& into,
+                            const Element* group) {
   const Element e = parseElement(file, node);
   static const char* kTypes[] = {"obj", "ply", "serialized", "rectangle", "cube", "disk", "sphere", "cylinder",
-                                "linearcurve", "bsplinecurve"};
+                                "linearcurve", "bsplinecurve", "sdfgrid"};
   bool known = false;
   for (const char* t : kTypes) known = known || e.type == t;
   if (e.type.empty()) e.fail("missing attribute 'type'");
+  if (group && (e.type == "shapegroup" || e.type == "instance"))
+    e.fail("a " + e.type + " inside the shapegroup at " + group->where() + " (Mitsuba permits no nesting)");
   if (!known) {
     unsupported(e.where() + ": unknown plugin '" + e.type + "'");
     return;  // lenient: the shape is left out
@@ -194,6 +215,9 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
       unexpectedChild(e, child);
     }
   }
+  if (group && emitterNode)
+    throw LocatedError(whereOf(*emitterFile, emitterNode) + ": an emitter on a shape inside the shapegroup at " +
+                       group->where() + " (Mitsuba cannot instance emitters)");
   if (!bsdf) bsdf = defaultBsdf(!emitterNode.empty());
   const int material = bsdfIndex(bsdf);
   const std::string name = (e.id.empty() ? anonymousName(e.type) : e.id) + " (" + file->location(node) + ")";
@@ -203,28 +227,33 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   int meshIndex = -1, sphereIndex = -1;
 
   const bool curve = e.type == "linearcurve" || e.type == "bsplinecurve";
-  if (emitterNode && (e.type == "cylinder" || curve)) {
-    // Mitsuba 3 cannot sample a position on a curve either (Shape::sample_position is not
-    // implemented for them), so it cannot render one as an area light.
+  if (emitterNode && (e.type == "cylinder" || e.type == "sdfgrid" || curve)) {
+    // Mitsuba 3 cannot sample a position on a curve or an sdfgrid either (Shape::sample_position
+    // is not implemented for them), so it cannot render one as an area light.
     unsupported(whereOf(*emitterFile, emitterNode) + ": an area emitter on a " + e.type + " is not supported");
     emitterNode = pugi::xml_node();  // lenient: the shape is kept without its emission
   }
-  if (e.type == "cylinder" || e.type == "sphere" || curve) checkMeshAttributes(e, bsdf, nullptr);
+  if (e.type == "cylinder" || e.type == "sphere" || e.type == "sdfgrid" || curve) checkMeshAttributes(e, bsdf, nullptr);
   if (media.transition() && (e.type == "cylinder" || curve))
     unsupported(e.where() + ": media on a " + e.type + " are not supported (an open surface bounds no volume)");
+  if (media.transition() && e.type == "sdfgrid") unsupported(e.where() + ": media inside an sdfgrid are not supported");
+  const auto resolve = [&](const std::string& fn) { return resolvePath(e, fn); };
   if (curve) {
     if (flip) e.failParam("flip_normals", "a curve's normals cannot be flipped (its inside is never hit)");
-    scene_.curves.push_back(makeCurve(e, toWorld, name, material, [&](const std::string& fn) { return resolvePath(e, fn); }));
+    into.curves.push_back(makeCurve(e, toWorld, name, material, resolve));
+  } else if (e.type == "sdfgrid") {
+    if (flip) e.failParam("flip_normals", "Mitsuba's sdfgrid has no 'flip_normals' (its normal is the distance's gradient)");
+    into.sdfGrids.push_back(makeSdfGrid(e, toWorld, name, material, resolve));
   } else if (e.type == "cylinder") {
-    scene_.cylinders.push_back(makeCylinder(e, toWorld, name, flip, material));
+    into.cylinders.push_back(makeCylinder(e, toWorld, name, flip, material));
   } else if (e.type == "sphere") {
-    sphereIndex = static_cast<int>(scene_.spheres.size());
-    scene_.spheres.push_back(makeSphere(e, toWorld, name, flip, material));
-    scene_.spheres.back().media = media;
+    sphereIndex = static_cast<int>(into.spheres.size());
+    into.spheres.push_back(makeSphere(e, toWorld, name, flip, material));
+    into.spheres.back().media = media;
   } else {
     MeshPolicy policy;
     policy.flipNormals = flip;
-    MeshData data = shapeMeshData(e, policy, [&](const std::string& fn) { return resolvePath(e, fn); });
+    MeshData data = shapeMeshData(e, policy, resolve);
     Mesh mesh = buildMesh(std::move(data), toWorld, policy);
     if (mesh.triangles.empty())
       unsupported(e.where() + ": the mesh has no valid triangles (" + std::to_string(mesh.degenerateSkipped) +
@@ -233,8 +262,8 @@ void Loader::buildShape(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     mesh.name = name;
     mesh.bsdf = material;
     mesh.media = media;
-    meshIndex = static_cast<int>(scene_.meshes.size());
-    scene_.meshes.push_back(std::move(mesh));
+    meshIndex = static_cast<int>(into.meshes.size());
+    into.meshes.push_back(std::move(mesh));
   }
   checkUnused(e);
   registerId(e, Kind::Shape);

@@ -3,27 +3,13 @@
 #include <cstring>
 #include <fstream>
 
+#include "common/vol_file_bytes.h"
 #include "core/error.h"
 #include "scene/volume_grid_file.h"
 #include "scene_test_util.h"
 
 namespace rc::test {
 namespace {
-
-struct VolBytes {
-  std::string s = "VOL\x03";
-  void i32(int32_t v) { for (int i = 0; i < 4; ++i) s.push_back(static_cast<char>((static_cast<uint32_t>(v) >> (8 * i)) & 0xff)); }
-  void f32(float f) { int32_t b; std::memcpy(&b, &f, 4); i32(b); }
-};
-
-VolBytes header(int x, int y, int z, int channels) {
-  VolBytes b;
-  b.i32(1);
-  b.i32(x); b.i32(y); b.i32(z);
-  b.i32(channels);
-  for (float f : {-1.f, -2.f, -3.f, 1.f, 2.f, 3.f}) b.f32(f);
-  return b;
-}
 
 // Each test process writes into its own folder: ctest runs the tests of this file in parallel.
 std::string writeFile(const std::string& name, const std::string& bytes) {
@@ -44,7 +30,7 @@ std::string errorOf(const std::string& bytes) {
 }
 
 TEST(VolumeGridFile, ReadsValuesXFastestWithChannelsTogether) {
-  VolBytes b = header(2, 3, 4, 2);
+  VolBytes b = volHeader(2, 3, 4, 2);
   for (int i = 0; i < 2 * 3 * 4 * 2; ++i) b.f32(static_cast<float>(i));
   b.s += "trailing";
   const VolumeGrid g = readVolumeGrid(writeFile("ok.vol", b.s));
@@ -61,27 +47,27 @@ TEST(VolumeGridFile, ReadsValuesXFastestWithChannelsTogether) {
 
 TEST(VolumeGridFile, RejectsMalformedFiles) {
   EXPECT_NE(errorOf("VOL").find("48-byte header"), std::string::npos);
-  VolBytes magic = header(1, 1, 1, 1);
+  VolBytes magic = volHeader(1, 1, 1, 1);
   magic.s[0] = 'X';
   EXPECT_NE(errorOf(magic.s).find("\"VOL\""), std::string::npos);
-  VolBytes version = header(1, 1, 1, 1);
+  VolBytes version = volHeader(1, 1, 1, 1);
   version.s[3] = 2;
   EXPECT_NE(errorOf(version.s).find("version 2"), std::string::npos);
   VolBytes encoding;
   encoding.i32(2);
   for (int i = 0; i < 10; ++i) encoding.i32(1);
   EXPECT_NE(errorOf(encoding.s).find("encoding 2"), std::string::npos);
-  EXPECT_NE(errorOf(header(0, 1, 1, 1).s).find("resolution along x is 0"), std::string::npos);
-  EXPECT_NE(errorOf(header(1, 1, 1, -3).s).find("channel count -3"), std::string::npos);
+  EXPECT_NE(errorOf(volHeader(0, 1, 1, 1).s).find("resolution along x is 0"), std::string::npos);
+  EXPECT_NE(errorOf(volHeader(1, 1, 1, -3).s).find("channel count -3"), std::string::npos);
 }
 
 TEST(VolumeGridFile, HeaderPromisingMoreThanTheFileHoldsFailsBeforeAllocating) {
   // 2^31-1 cubed overflows 64 bits; the reader must notice before multiplying or allocating.
-  EXPECT_NE(errorOf(header(0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff).s).find("truncated"), std::string::npos);
-  VolBytes shortData = header(2, 2, 2, 1);
+  EXPECT_NE(errorOf(volHeader(0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff).s).find("truncated"), std::string::npos);
+  VolBytes shortData = volHeader(2, 2, 2, 1);
   for (int i = 0; i < 7; ++i) shortData.f32(1.f);
   EXPECT_NE(errorOf(shortData.s).find("truncated"), std::string::npos);
-  VolBytes nan = header(1, 1, 1, 1);
+  VolBytes nan = volHeader(1, 1, 1, 1);
   nan.f32(std::nanf(""));
   EXPECT_NE(errorOf(nan.s).find("value 0 is not finite"), std::string::npos);
   EXPECT_NE(errorOf("").find("48-byte header"), std::string::npos);
