@@ -193,6 +193,8 @@ TEST(SdfGridLoad, MalformedGridsAndParametersAreErrors) {
               {"scene.xml:3:", "flip_normals"});
   expectError([&] { loadText(dir, sceneXml("<shape type=\"sdfgrid\"/>")); }, {"scene.xml:3:", "missing parameter 'filename'"});
   expectError([&] { sdf(volGrid(2, 2, 2, ramp), "<emitter type=\"area\"/>"); }, {"scene.xml:3:", "area emitter on a sdfgrid"});
+  expectError([&] { sdf(volGrid(2, 2, 2, ramp), "<medium type=\"homogeneous\" name=\"interior\"/>"); },
+              {"scene.xml:3:", "media inside an sdfgrid are not supported"});
   const Scene ok = sdf(volGrid(3, 2, 2, ramp), "<string name=\"normals\" value=\"analytic\"/>");
   ASSERT_EQ(ok.sdfGrids.size(), 1u);
   EXPECT_FALSE(ok.sdfGrids[0].smoothNormals);
