@@ -1,6 +1,7 @@
 // The integrator registry: names, parameter lists for -D routing, aliases (volpath), direct's counts,
 // unknown types and unused parameters with their locations, and nested integrators.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -28,7 +29,9 @@ std::string errorOf(IntegratorSettings s, bool lenient = false, std::vector<std:
 }
 
 Scene loadIntegratorXml(const std::string& integratorXml) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rc_registry_test";
+  // One folder per process: ctest runs this file's tests as parallel processes.
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("rc_registry_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "scene.xml").string();
   std::ofstream(path) << "<scene version=\"3.0.0\">\n"
