@@ -32,14 +32,13 @@ def seed_stats(images):
     return means.mean(0), se
 
 
-def blocks(im):
-    h, w = im.shape[0] // BLOCK * BLOCK, im.shape[1] // BLOCK * BLOCK
-    return im[:h, :w].reshape(h // BLOCK, BLOCK, w // BLOCK, BLOCK, 3).mean((1, 3)).sum(-1)
-
-
 def block_channels(im):
     h, w = im.shape[0] // BLOCK * BLOCK, im.shape[1] // BLOCK * BLOCK
     return im[:h, :w].reshape(h // BLOCK, BLOCK, w // BLOCK, BLOCK, 3).mean((1, 3))
+
+
+def blocks(im):
+    return block_channels(im).sum(-1)
 
 
 def paired_blocks(new, old):
