@@ -9,8 +9,9 @@ Default: per channel the mean over the seeds of each set's image mean, its stand
 seeds' spread, the ratio A/B and z = difference / combined standard error; then per 16-px block the
 ratio and z of the channels' sum (needs two or more images in each set). --paired: the mean over
 seed pairs of NEW's image mean ÷ OLD's, per channel, with its standard error (a change's effect with
-the seeds' noise cancelled). --noise: the per-pixel relative variance across the seeds, averaged over
-the image (the variance of one render). Needs numpy and Mitsuba 3 (reads EXR through
+the seeds' noise cancelled), then NEW − OLD per 16-px block and channel in % with its z. --noise:
+the per-pixel relative variance across the seeds, averaged over the image (the variance of one
+render). Needs numpy and Mitsuba 3 (reads EXR through
 mitsuba.Bitmap), e.g. /root/.cache/rcache/bench-venv/bin/python.
 """
 import argparse
@@ -31,9 +32,25 @@ def seed_stats(images):
     return means.mean(0), se
 
 
-def blocks(im):
+def block_channels(im):
     h, w = im.shape[0] // BLOCK * BLOCK, im.shape[1] // BLOCK * BLOCK
-    return im[:h, :w].reshape(h // BLOCK, BLOCK, w // BLOCK, BLOCK, 3).mean((1, 3)).sum(-1)
+    return im[:h, :w].reshape(h // BLOCK, BLOCK, w // BLOCK, BLOCK, 3).mean((1, 3))
+
+
+def blocks(im):
+    return block_channels(im).sum(-1)
+
+
+def paired_blocks(new, old):
+    # Per block and channel: the mean over seed pairs of NEW − OLD, in % of OLD's mean, and its z
+    # from the pairs' spread (a local change with the seeds' noise cancelled as far as the two share it).
+    d = np.array([block_channels(n) - block_channels(o) for n, o in zip(new, old)])
+    ref = np.mean([block_channels(o) for o in old], 0)
+    z = d.mean(0) / (d.std(0, ddof=1) / np.sqrt(len(d)) + 1e-30)
+    np.set_printoptions(linewidth=200, precision=3, suppress=True)
+    for c, name in enumerate("RGB"):
+        print(f"{BLOCK}-px blocks, {name}: NEW - OLD in % of OLD\n", 100 * d.mean(0)[..., c] / ref[..., c])
+        print(f"  z\n", z[..., c])
 
 
 def compare(a, b):
@@ -66,6 +83,8 @@ def main():
     elif args.paired:
         r = np.array([n.reshape(-1, 3).mean(0) / o.reshape(-1, 3).mean(0) for n, o in zip(sets[0], sets[1])])
         print("NEW/OLD image mean per channel", np.round(r.mean(0), 5), "±", np.round(r.std(0, ddof=1) / np.sqrt(len(r)), 5))
+        if len(r) > 1:
+            paired_blocks(sets[0], sets[1])
     else:
         compare(sets[0], sets[1])
 
