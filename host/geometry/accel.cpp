@@ -333,6 +333,17 @@ Hit sphereHit(const Sphere& s, int index, const Ray& ray, float t, bool withUv) 
   return h;
 }
 
+// An analytic shape's hit geometry (one normal, the partials and uv; cylinder and curve geometry
+// share these fields) into the hit, after h.p is set: texture lookups read the point too.
+template <class Geometry>
+void setAnalyticFrame(Hit& h, const Geometry& g) {
+  h.ng = h.ns = g.n;
+  h.dpdu = g.dpdu;
+  h.dpdv = g.dpdv;
+  h.uv = g.uv;
+  h.uv.position = h.p;
+}
+
 Hit cylinderHit(const Cylinder& c, const Ray& ray, float t) {
   const CylinderHitGeometry g = cylinderHitGeometry(c, ray.o + t * ray.d);
   Hit h;
@@ -342,11 +353,7 @@ Hit cylinderHit(const Cylinder& c, const Ray& ray, float t) {
   h.p = g.p;
   h.pError = kPointErrorUlps * kFloatEps * (maxAbs(g.p) + maxAbs(Vec3(c.toWorld[3])) + glm::length(Vec3(c.toWorld[0])) +
                                             glm::length(Vec3(c.toWorld[2])));
-  h.ng = h.ns = g.n;
-  h.dpdu = g.dpdu;
-  h.dpdv = g.dpdv;
-  h.uv = g.uv;
-  h.uv.position = h.p;
+  setAnalyticFrame(h, g);
   return h;
 }
 
@@ -362,11 +369,7 @@ Hit curveHit(const Curve& c, int index, const Ray& ray, unsigned prim, float u, 
   h.p = ray.o + t * ray.d;
   h.pError = kPointErrorUlps * kFloatEps * (maxAbs(ray.o) + t * maxAbs(ray.d));
   const CurveHitGeometry g = curveHitGeometry(c, prim, u, h.p);
-  h.ng = h.ns = g.n;
-  h.dpdu = g.dpdu;
-  h.dpdv = g.dpdv;
-  h.uv = g.uv;
-  h.uv.position = h.p;
+  setAnalyticFrame(h, g);
   return h;
 }
 

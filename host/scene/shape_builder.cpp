@@ -17,6 +17,13 @@ namespace rc {
 
 namespace {
 
+// The shape's `filename`, which it cannot do without; `hint` follows the error's text.
+std::string requiredFilename(const Element& e, const std::string& hint) {
+  const std::string fn = e.located([&] { return e.props.getString("filename", ""); });
+  if (fn.empty()) e.fail("missing parameter 'filename'" + hint);
+  return fn;
+}
+
 // The analytic sphere of a <shape type="sphere">, its center and radius taken to world space.
 Sphere makeSphere(const Element& e, const Mat4& toWorld, const std::string& name, bool flip, int material) {
   Sphere s;
@@ -75,8 +82,7 @@ Cylinder makeCylinder(const Element& e, const Mat4& toWorld, const std::string& 
 // (Mitsuba culls them; so does geometry/curve_geometry's filter).
 template <class Resolve>
 Curve makeCurve(const Element& e, const Mat4& toWorld, const std::string& name, int material, const Resolve& resolve) {
-  const std::string fn = e.located([&] { return e.props.getString("filename", ""); });
-  if (fn.empty()) e.fail("missing parameter 'filename'");
+  const std::string fn = requiredFilename(e, "");
   Curve c;
   c.name = name;
   c.basis = e.type == "linearcurve" ? CurveBasis::Linear : CurveBasis::BSpline;
@@ -103,8 +109,7 @@ Curve makeCurve(const Element& e, const Mat4& toWorld, const std::string& name, 
 //                         voxel boxes do not follow; rcache's boxes do)
 template <class Resolve>
 SdfGrid makeSdfGrid(const Element& e, const Mat4& toWorld, const std::string& name, int material, const Resolve& resolve) {
-  const std::string fn = e.located([&] { return e.props.getString("filename", ""); });
-  if (fn.empty()) e.fail("missing parameter 'filename' (the grid's .vol file)");
+  const std::string fn = requiredFilename(e, " (the grid's .vol file)");
   const std::string normals = e.located([&] { return e.props.getString("normals", "smooth"); });
   if (normals != "smooth" && normals != "analytic")
     e.failParam("normals", "'normals' must be 'smooth' or 'analytic', got '" + normals + "'");
@@ -129,9 +134,7 @@ MeshData shapeMeshData(const Element& e, MeshPolicy& policy, const Resolve& reso
   if (fromFile || e.type == "cube")
     policy.faceNormals = e.located([&] { return e.props.getBool("face_normals", false); });
   if (fromFile) {
-    const std::string fn = e.located([&] { return e.props.getString("filename", ""); });
-    if (fn.empty()) e.fail("missing parameter 'filename'");
-    const std::string path = resolve(fn);
+    const std::string path = resolve(requiredFilename(e, ""));
     if (e.type == "obj") {
       const bool flipUv = e.located([&] { return e.props.getBool("flip_tex_coords", true); });
       data = e.located([&] { return loadObj(path, flipUv); });
