@@ -24,11 +24,21 @@ struct FallbackDecision {
   double servedShare = 0.0;  // s: pilot points (with a surface hit) the cache would serve
   double lobeSplitShare = 0.0;  // the part of s served through lobe-split materials' bases
   size_t pilotPoints = 0;    // pilot camera rays that hit a surface
+  // The coherence test (cache/record_coherence.h), where the share passed: q, the upper end of its
+  // interval, and the points it tested (own material cached).
+  double neighbourServedShare = 0.0, neighbourServedBound = 0.0;
+  size_t coherencePoints = 0;
   std::string reason;        // for the statistics
 };
 
 // Never falls back when params.fallback is false, when a cache is loaded or is to be saved (the
 // user asked for the cache itself), or when nothing is hit.
 FallbackDecision decideFallback(const RcacheRun& run);
+
+// Statistics: fallback (the decision and its figures), and where the pilot hit anything
+// pilot_served_share and pilot_lobe_split_share; where the coherence test ran,
+// pilot_neighbour_served_share (q), pilot_neighbour_served_bound (its upper end) and
+// pilot_coherence_points.
+void reportFallback(const FallbackDecision& d, RenderStats& stats);
 
 }  // namespace rc

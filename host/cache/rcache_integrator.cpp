@@ -204,9 +204,7 @@ bool RcachePasses::addPass(Film& film, int firstSample) {
 Image RcachePasses::finish(const Film& film, int passes, bool stopped, RenderStats& stats) {
   if (pathPasses_) {
     Image img = pathPasses_->finish(film, passes, stopped, stats);
-    stats.setText("fallback", fallback_.reason);
-    stats.set("pilot_served_share", fallback_.servedShare);
-    stats.set("pilot_lobe_split_share", fallback_.lobeSplitShare);
+    reportFallback(fallback_, stats);
     reportCostPilot(cost_, stats);
     return img;
   }
@@ -224,9 +222,7 @@ Image RcachePasses::finish(const Film& film, int passes, bool stopped, RenderSta
   }
   reportRcacheStats(*run_, {secondsSince(start_), tablesS_, finalS_, fill_, totals_, recordsLoaded_, stopped},
                     stats);
-  stats.setText("fallback", fallback_.reason);
-  if (fallback_.pilotPoints > 0) stats.set("pilot_served_share", fallback_.servedShare);
-  if (fallback_.pilotPoints > 0) stats.set("pilot_lobe_split_share", fallback_.lobeSplitShare);
+  reportFallback(fallback_, stats);
   reportCostPilot(cost_, stats);
   if (recordsLoaded_ > 0) stats.set("records_too_coarse", double(recordsSkipped_));
   return img;
