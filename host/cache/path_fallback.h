@@ -11,7 +11,10 @@
 // (1 − s + s·r)(1 + o) ≥ (1 − s)(1 + o) of the path tracer's error (r: its remaining error
 // ratio on the served points): with o ≈ 0.3–0.8 (bench/RESULTS.md) it cannot win below
 // s ≈ o / (1 + o) ≈ 0.25–0.45. Below fallback_share (0.25) the whole image is path traced by
-// the path integrator (same max_depth, same estimator), and the statistics say so.
+// the path integrator (same max_depth, same estimator), and the statistics say so. Where the
+// share passes, the coherence test (cache/record_coherence.h) asks whether a record can serve more
+// than its own pixel; where it cannot (geometry finer than the pixels), the image is path traced
+// too.
 #include <cstddef>
 #include <string>
 

@@ -59,7 +59,8 @@
 //                       cached points no longer light-sample those (off: measured not to pay,
 //                       bench/RESULTS.md "Environment light in the cache")
 //   fallback     true   a pilot decides before the fill whether the cache can pay; if it would
-//                       serve less than fallback_share of the image, the image is path traced
+//                       serve less than fallback_share of the image, or its records could not
+//                       serve their neighbours (cache/record_coherence.h), the image is path traced
 //   fallback_share 0.25 that threshold (cache/path_fallback.h says why 0.25)
 //   cost_pilot   false  where the share pilot caches, a cost pilot at ~1/64 of the pixels chooses
 //                       the fastest of path tracer, rcache and rcache + lobe split to the path
