@@ -142,7 +142,7 @@ FallbackDecision decideFallback(const RcacheRun& run) {
                   "path traced: a floor record would serve the point %.2f px away at %.1f %% of %zu pilot points "
                   "(at most %.1f %%; threshold %.1f %%) though the cache would serve %.1f %% of %zu",
                   coherence.offsetPx, 100.0 * d.neighbourServedShare, coherence.points,
-                  100.0 * d.neighbourServedBound, 100.0 * kMinNeighbourServed, 100.0 * d.servedShare, hits);
+                  100.0 * d.neighbourServedBound, 100.0 * minNeighbourServed(), 100.0 * d.servedShare, hits);
   } else if (coherence.points > 0 && n > 0 && size_t(n) < sizeof(buf)) {
     std::snprintf(buf + n, sizeof(buf) - size_t(n), "; a floor record serves its neighbour %.2f px away at %.1f %% of %zu",
                   coherence.offsetPx, 100.0 * d.neighbourServedShare, coherence.points);

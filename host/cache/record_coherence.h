@@ -12,20 +12,24 @@
 // the floor radius (a·R = r_min footprints) serves the second hit: same cache, contributionWeight
 // on geometric normals, as the fill's lookups do. q is the share of such neighbours served.
 //
-// Threshold, from cost: sharing is the cache's only gain. A record that serves one pixel spends its
-// ~1000 rays on an S-ray estimate of that pixel's first bounce, which the path tracer buys for the
-// same rays at no interpolation error; so a record must serve at least the area of one pixel (at
-// the base budget 1/(π·1.5²) of its floor disk, the same fraction at every budget) for the cache to
-// be able to win. Where a record serves a patch of radius ρ (in pixels) around a uniform point of
-// it, a step of δ in a random direction leaves the patch with probability 2δ/(πρ) (Crofton: the
-// patch's perimeter over π times its area, times δ; a strip of width ρ gives the same), so
-// q = 1 − 2δ/(πρ), and ρ ≥ 1/√π pixels (a patch of one pixel) means q ≥ 1 − 2δ√π/π = 1 − 1/√π
-// ≈ 0.436 at δ = ½ px. The cost pilot (cache/cost_pilot.h), where it runs, then judges the
-// images that pass with measured timings.
+// Threshold, from cost: sharing is the cache's only gain. A record that serves m pixels spends its
+// S rays (and about as many again shading their hits) on an S-ray estimate of those pixels' first
+// bounce; the path tracer, for the same rays, gives each of the m pixels S/m samples of about the
+// same cost each, so at equal rays the record's error is lower only for m > 1, and the batched
+// final pass's overhead o over the path tracer (cache/path_fallback.h: 0.3–0.8 measured; 0.3 as
+// fallback_share takes it, the lenient end) raises that to m > 1 + o = 1.3 pixels. Where a record
+// serves a patch of radius ρ (in pixels) around a uniform point of it, a step of δ in a random
+// direction leaves the patch with probability 2δ/(πρ) (Crofton: the patch's perimeter over π
+// times its area, times δ; a strip of width ρ gives the same), so q = 1 − 2δ/(πρ), and πρ² ≥ 1.3
+// means q ≥ 1 − 2δ/√(1.3π) ≈ 0.505 at δ = ½ px. At other budgets r_min, δ and the record's rays
+// change together so that the fill costs per pixel what the final pass does (budget_params.h):
+// the same q holds. The cost pilot (cache/cost_pilot.h), where it runs, then judges the images
+// that pass with measured timings.
 //
 // A small image must not flip on noise: the pilot path traces only when the upper end of a
-// 3-sigma Wilson interval of q is below the threshold: 12 tested points with no neighbour served,
-// 40 at q̂ = 0.2, 120 at q̂ = 0.3.
+// 3-sigma Wilson interval of q is below the threshold: 9 tested points with no neighbour served,
+// 25 at q̂ = 0.2, 54 at q̂ = 0.3.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -37,8 +41,10 @@ namespace rc {
 
 // The neighbour's distance as a fraction of r_min (pixels).
 constexpr float kNeighbourOffsetOfFloor = 1.0f / 3.0f;
-// 1 − 1/√π: below it a floor record serves less than one pixel's area (above).
-constexpr double kMinNeighbourServed = 0.4358104164;
+// 1 + o: the pixels a record must serve to beat the path tracer at equal rays (above).
+constexpr double kMinPixelsPerRecord = 1.3;
+// The q of a record serving kMinPixelsPerRecord pixels, at δ = ½ px (above): 1 − 2δ/√(π·1.3).
+inline double minNeighbourServed() { return 1.0 - 1.0 / std::sqrt(3.14159265358979323846 * kMinPixelsPerRecord); }
 // z of the one-sided bound on q the decision uses.
 constexpr double kCoherenceBoundZ = 3.0;
 
@@ -49,8 +55,8 @@ struct RecordCoherence {
   double share() const { return points > 0 ? double(served) / double(points) : 1.0; }
   // Upper end of the Wilson score interval of q at kCoherenceBoundZ (1 with no points).
   double upperBound() const;
-  // Records could not serve their neighbours: the upper bound of q is below kMinNeighbourServed.
-  bool tooIncoherent() const { return points > 0 && upperBound() < kMinNeighbourServed; }
+  // Records could not serve their neighbours: the upper bound of q is below minNeighbourServed().
+  bool tooIncoherent() const { return points > 0 && upperBound() < minNeighbourServed(); }
 };
 
 // The test above over the pilot's primaries `prim` (traced from filmPos with seeds), at the points

@@ -58,7 +58,7 @@ TEST(RecordCoherence, SubPixelFacetsArePathTraced) {
   EXPECT_EQ(why.rfind("path traced: a floor record", 0), 0u) << why;
   EXPECT_DOUBLE_EQ(r.stats.get("pilot_served_share"), 1.0);  // the share alone would cache it
   EXPECT_EQ(r.stats.get("pilot_coherence_points"), 1024.0);
-  EXPECT_LT(r.stats.get("pilot_neighbour_served_bound"), kMinNeighbourServed);
+  EXPECT_LT(r.stats.get("pilot_neighbour_served_bound"), minNeighbourServed());
   EXPECT_EQ(r.stats.get("records", 0.0), 0.0);
   // Path traced by the path integrator: its image, bit for bit.
   ASSERT_EQ(r.image.pixels.size(), path.image.pixels.size());
@@ -72,20 +72,21 @@ TEST(RecordCoherence, FacetsSpanningPixelsAreCached) {
   const std::string why = statText(r.stats, "fallback");
   std::printf("%s\n", why.c_str());
   EXPECT_EQ(why.rfind("cached", 0), 0u) << why;
-  EXPECT_GT(r.stats.get("pilot_neighbour_served_bound"), kMinNeighbourServed);
+  EXPECT_GT(r.stats.get("pilot_neighbour_served_bound"), minNeighbourServed());
   EXPECT_GT(r.stats.get("records", 0.0), 0.0);
 }
 
-// A small image does not flip on noise: 2 neighbours served of 16 points (a 4² image) leave the
+// A small image does not flip on noise: 4 neighbours served of 16 points (a 4² image) leave the
 // bound above the threshold; the same share over 160 points does not.
 TEST(RecordCoherence, FewPilotPointsDoNotDecide) {
+  EXPECT_NEAR(minNeighbourServed(), 0.505, 0.001);
   RecordCoherence c;
   c.points = 16;
-  c.served = 2;
-  EXPECT_GT(c.upperBound(), kMinNeighbourServed);
+  c.served = 4;
+  EXPECT_GT(c.upperBound(), minNeighbourServed());
   c.points = 160;
-  c.served = 20;
-  EXPECT_LT(c.upperBound(), kMinNeighbourServed);
+  c.served = 40;
+  EXPECT_LT(c.upperBound(), minNeighbourServed());
   c.points = 0;
   EXPECT_FALSE(c.tooIncoherent());
 }
