@@ -36,6 +36,7 @@
 
 #include "cache/primary_hits.h"
 #include "cache/rcache_run.h"
+#include "core/math.h"
 
 namespace rc {
 
@@ -44,7 +45,7 @@ constexpr float kNeighbourOffsetOfFloor = 1.0f / 3.0f;
 // 1 + o: the pixels a record must serve to beat the path tracer at equal rays (above).
 constexpr double kMinPixelsPerRecord = 1.3;
 // The q of a record serving kMinPixelsPerRecord pixels, at δ = ½ px (above): 1 − 2δ/√(π·1.3).
-inline double minNeighbourServed() { return 1.0 - 1.0 / std::sqrt(3.14159265358979323846 * kMinPixelsPerRecord); }
+inline double minNeighbourServed() { return 1.0 - 1.0 / std::sqrt(kPiD * kMinPixelsPerRecord); }
 // z of the one-sided bound on q the decision uses.
 constexpr double kCoherenceBoundZ = 3.0;
 
