@@ -123,10 +123,10 @@ FallbackDecision decideFallback(const RcacheRun& run) {
   d.lobeSplitShare = splitSum / double(hits);
   d.pathTrace = d.servedShare < run.params.fallbackShare;
   char buf[400];
-  int n = std::snprintf(buf, sizeof(buf),
-                        "%s: the cache would serve %.1f %% of %zu pilot points (%.1f %% through lobe splits; threshold %.0f %%)",
-                        d.pathTrace ? "path traced" : "cached", 100.0 * d.servedShare, hits, 100.0 * d.lobeSplitShare,
-                        100.0 * run.params.fallbackShare);
+  const int n = std::snprintf(buf, sizeof(buf),
+                              "%s: the cache would serve %.1f %% of %zu pilot points (%.1f %% through lobe splits; threshold %.0f %%)",
+                              d.pathTrace ? "path traced" : "cached", 100.0 * d.servedShare, hits,
+                              100.0 * d.lobeSplitShare, 100.0 * run.params.fallbackShare);
   if (d.pathTrace) {
     d.reason = buf;
     return d;
