@@ -124,7 +124,8 @@ FallbackDecision decideFallback(const RcacheRun& run) {
   d.pathTrace = d.servedShare < run.params.fallbackShare;
   char buf[400];
   const int n = std::snprintf(buf, sizeof(buf),
-                              "%s: the cache would serve %.1f %% of %zu pilot points (%.1f %% through lobe splits; threshold %.0f %%)",
+                              "%s: the cache would serve %.1f %% of %zu pilot points "
+                              "(%.1f %% through lobe splits; threshold %.0f %%)",
                               d.pathTrace ? "path traced" : "cached", 100.0 * d.servedShare, hits,
                               100.0 * d.lobeSplitShare, 100.0 * run.params.fallbackShare);
   if (d.pathTrace) {
@@ -144,8 +145,9 @@ FallbackDecision decideFallback(const RcacheRun& run) {
                   coherence.offsetPx, 100.0 * d.neighbourServedShare, coherence.points,
                   100.0 * d.neighbourServedBound, 100.0 * minNeighbourServed(), 100.0 * d.servedShare, hits);
   } else if (coherence.points > 0 && n > 0 && size_t(n) < sizeof(buf)) {
-    std::snprintf(buf + n, sizeof(buf) - size_t(n), "; a floor record serves its neighbour %.2f px away at %.1f %% of %zu",
-                  coherence.offsetPx, 100.0 * d.neighbourServedShare, coherence.points);
+    std::snprintf(buf + n, sizeof(buf) - size_t(n),
+                  "; a floor record serves its neighbour %.2f px away at %.1f %% of %zu", coherence.offsetPx,
+                  100.0 * d.neighbourServedShare, coherence.points);
   }
   d.reason = buf;
   return d;
