@@ -1,4 +1,4 @@
-// <medium type="homogeneous"> with its <phase> (parameters: scene/medium.h), and the references to
+// <medium type="homogeneous"> and <medium type="heterogeneous"> with its <phase> (parameters: scene/medium.h), and the references to
 // media from shapes (interior, exterior) and the sensor (medium).
 #include <cmath>
 
@@ -32,8 +32,10 @@ bool inUnitInterval(const Color& c) { return glm::all(glm::greaterThanEqual(c, C
 int Loader::buildMedium(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
   const Element e = parseElement(file, node);
   if (e.type.empty()) e.fail("missing attribute 'type'");
-  if (e.type != "homogeneous") e.fail("unknown medium plugin '" + e.type + "' (known: homogeneous)");
+  if (e.type != "homogeneous" && e.type != "heterogeneous")
+    e.fail("unknown medium plugin '" + e.type + "' (known: homogeneous, heterogeneous)");
   Medium m;
+  m.homogeneous = e.type == "homogeneous";
   m.name = (e.id.empty() ? anonymousName(e.type) : e.id) + " (" + file->location(node) + ")";
   bool phaseGiven = false;
   std::map<std::string, VolumePtr> volumes;
@@ -65,10 +67,24 @@ int Loader::buildMedium(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     e.failParam("sigma_t", "the extinction 'sigma_t' must be non-negative");
   if (!inUnitInterval(m.albedo->minimum()) || !inUnitInterval(m.albedo->maximum()))
     e.failParam("albedo", "the 'albedo' must lie in [0, 1]");
-  // Homogeneous: Mitsuba reads the extinction (its majorant) at the interaction's default
-  // position, the origin, whatever volume gives it.
-  m.sigmaT = sigmaT->eval(Vec3(0.0f)) * scale;
-  if (!std::isfinite(maxComponent(m.sigmaT))) e.failParam("sigma_t", "'sigma_t' · 'scale' is not finite");
+  if (m.homogeneous) {
+    // Mitsuba reads the extinction (its majorant) at the interaction's default position, the
+    // origin, whatever volume gives it.
+    m.sigmaT = sigmaT->eval(Vec3(0.0f)) * scale;
+    if (!std::isfinite(maxComponent(m.sigmaT))) e.failParam("sigma_t", "'sigma_t' · 'scale' is not finite");
+  } else {
+    m.density = sigmaT;
+    m.scale = scale;
+    m.majorant = scale * maxComponent(sigmaT->maximum());
+    if (!std::isfinite(m.majorant)) e.failParam("sigma_t", "the majorant 'scale' · max 'sigma_t' is not finite");
+    const Bounds3 box = sigmaT->bounds();
+    const double across = double(m.majorant) * glm::length(box.hi - box.lo);
+    if (m.majorant > 0.0f && !(across <= kMaxCollisionsAcross))
+      e.failParam("sigma_t", "the majorant 'scale' · max 'sigma_t' = " + std::to_string(m.majorant) +
+                                 " times the volume's diagonal is " + std::to_string(across) +
+                                 " expected null collisions across it (at most " +
+                                 std::to_string(static_cast<long>(kMaxCollisionsAcross)) + "): lower 'scale'");
+  }
   checkUnused(e);
   const int index = static_cast<int>(scene_.media.size());
   scene_.media.push_back(std::move(m));

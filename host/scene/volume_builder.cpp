@@ -12,7 +12,7 @@ VolumePtr Loader::buildVolume(const std::shared_ptr<XmlFile>& file, const pugi::
   for (const pugi::xml_node& child : e.children) unexpectedChild(e, child);
   VolumePtr volume;
   if (e.type == "constvolume") {
-    volume = makeConstVolume(e.located([&] { return e.props.getColor("value", Color(1.0f)); }));
+    volume = makeConstVolume(e.located([&] { return e.props.getColor("value", Color(1.0f)); }), e.transform("to_world"));
   } else if (e.type == "gridvolume") {
     const std::string fn = e.located([&] { return e.props.getString("filename", ""); });
     if (fn.empty()) e.fail("missing parameter 'filename'");
