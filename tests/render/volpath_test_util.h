@@ -53,12 +53,13 @@ struct Estimate {
   Color mean{0.0f}, stderr_{0.0f};
 };
 
-inline Estimate estimate(const test::World& w, const IntegratorSettings& s, const Ray& ray, int n, uint64_t seed) {
-  const RenderContext ctx = w.context();
+// Per channel: the mean and standard error of `sample(rng)` over n draws, each with its own seed.
+template <typename Sample>
+Estimate meanOf(int n, uint64_t seed, Sample&& sample) {
   Color sum(0.0f), sum2(0.0f);
   for (int i = 0; i < n; ++i) {
     Rng rng(hashMix(seed, static_cast<uint64_t>(i)));
-    const Color v = volPathRadiance(ctx, s, ray, rng);
+    const Color v = sample(rng);
     sum += v;
     sum2 += v * v;
   }
@@ -66,6 +67,12 @@ inline Estimate estimate(const test::World& w, const IntegratorSettings& s, cons
   e.mean = sum / float(n);
   e.stderr_ = glm::sqrt(glm::max(Color(0.0f), sum2 / float(n) - e.mean * e.mean) / float(n));
   return e;
+}
+
+// The radiance along `ray` (one volpath sample per draw).
+inline Estimate estimate(const test::World& w, const IntegratorSettings& s, const Ray& ray, int n, uint64_t seed) {
+  const RenderContext ctx = w.context();
+  return meanOf(n, seed, [&](Rng& rng) { return volPathRadiance(ctx, s, ray, rng); });
 }
 
 inline void expectNear(const Estimate& e, const Color& exact, const char* what) {
