@@ -1,6 +1,7 @@
 // <medium type="homogeneous"> and <medium type="heterogeneous"> with its <phase> (parameters: scene/medium.h), and the references to
 // media from shapes (interior, exterior) and the sensor (medium).
 #include <cmath>
+#include <cstdio>
 
 #include "scene/loader.h"
 
@@ -79,11 +80,12 @@ int Loader::buildMedium(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     if (!std::isfinite(m.majorant)) e.failParam("sigma_t", "the majorant 'scale' · max 'sigma_t' is not finite");
     const Bounds3 box = sigmaT->bounds();
     const double across = double(m.majorant) * glm::length(box.hi - box.lo);
-    if (m.majorant > 0.0f && !(across <= kMaxCollisionsAcross))
-      e.failParam("sigma_t", "the majorant 'scale' · max 'sigma_t' = " + std::to_string(m.majorant) +
-                                 " times the volume's diagonal is " + std::to_string(across) +
-                                 " expected null collisions across it (at most " +
-                                 std::to_string(static_cast<long>(kMaxCollisionsAcross)) + "): lower 'scale'");
+    if (m.majorant > 0.0f && !(across <= kMaxCollisionsAcross)) {
+      char text[256];
+      std::snprintf(text, sizeof(text), "the majorant 'scale' · max 'sigma_t' = %g over the volume's diagonal means %g expected null collisions per ray across it (at most %g): lower 'scale'",
+                    m.majorant, across, kMaxCollisionsAcross);
+      e.failParam("sigma_t", text);
+    }
   }
   checkUnused(e);
   const int index = static_cast<int>(scene_.media.size());

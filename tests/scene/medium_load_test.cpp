@@ -164,7 +164,7 @@ TEST(MediumLoad, HostileHeterogeneousMediaAreOnePreciseError) {
   expectError([&] { load(medium(grid("nan.vol"))); }, {"nan.vol"});
   expectError([&] { load(medium(grid("big.vol") + R"(<float name="scale" value="10"/>)")); }, {"h.xml:3", "majorant", "not finite"});
   expectError([&] { load(medium(grid("ok.vol") + R"(<float name="scale" value="1e6"/>)")); },
-              {"h.xml:3", "expected null collisions", "lower 'scale'"});
+              {"h.xml:3", "expected null collisions per ray", "lower 'scale'"});
   expectError([&] { load(medium(R"(<float name="scale" value="nan"/>)")); }, {"h.xml:4", "scale", "not a finite number"});
   // Empty (zero majorant) is a vacuum, not an error.
   EXPECT_EQ(load(medium(R"(<float name="sigma_t" value="0"/>)")).media.at(0).majorant, 0.0f);
