@@ -96,6 +96,49 @@ TEST(HeterogeneousMedium, ConstantGridRendersAsTheHomogeneousMedium) {
   }
 }
 
+// The image mean of a small volpath render of `medium` filling the box [−1,1]³, whose null walls
+// coincide with a heterogeneous medium's bounds, over a diffuse floor under a sky: per channel the
+// mean over `seeds` renders and its standard error from their spread.
+Estimate boxRenderMean(const Medium& medium, int seeds) {
+  Scene s;
+  s.media.push_back(medium);
+  const int null = test::addBsdf(s, nullBsdf());
+  for (Mesh wall : test::insideOfBox(Vec3(-1), Vec3(1), null)) {
+    wall.media.exterior = 0;  // the walls face inwards: their exterior is the box
+    s.meshes.push_back(wall);
+  }
+  s.meshes.push_back(test::quad({-4, -1.01f, 4}, {4, -1.01f, 4}, {4, -1.01f, -4}, {-4, -1.01f, -4}, test::addBsdf(s, test::diffuse(Color(0.5f)))));
+  test::addEmitter(s, test::constantEmitter(Color(1.0f)));
+  s.integrator.type = "volpath";
+  s.camera.toWorld = test::lookAt({0.3f, 1.5f, 5}, {0, 0, 0}, {0, 1, 0});
+  s.camera.fovDegrees = 40.0f;
+  s.film.width = s.film.height = 16;
+  s.film.filter = "box";
+  const test::World w(std::move(s));
+  int seed = 0;
+  return meanOf(seeds, 31, [&](Rng&) {
+    RenderOptions o;
+    o.spp = 16;
+    o.seed = static_cast<uint64_t>(++seed);
+    const Image img = w.renderPath(o);
+    Color sum(0.0f);
+    for (const Color& c : img.pixels) sum += c;
+    return sum / float(img.pixels.size());
+  });
+}
+
+// The same scene rendered (the path integrator's volpath core, whole images) with the box filled by a
+// constant grid exactly over its walls and by the homogeneous medium of that density: both
+// unbiased, so the image means agree within their seeds' noise.
+TEST(HeterogeneousMedium, ConstantGridBoxRendersAsTheHomogeneousBox) {
+  const Color albedo(0.8f, 0.6f, 0.4f);
+  const Estimate a = boxRenderMean(heterogeneous(gridOver(Vec3(-1), Vec3(1), 2, 1, {1.5f, 1.5f}), 1.0f, albedo), 16);
+  const Estimate h = boxRenderMean(homogeneous(Color(1.5f), albedo), 16);
+  EXPECT_GT(a.mean.r, 0.1f);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(a.mean[c], h.mean[c], 5.0f * std::hypot(a.stderr_[c], h.stderr_[c]) + 1e-4f) << "channel " << c;
+}
+
 // A lossless ramp medium (albedo 1) in a null sphere under a sky of 1 sees 1 everywhere: null
 // collisions, ratio-tracked shadow rays, MIS and Russian roulette must balance. The 3-channel ramp
 // (densities 1 : 0.4 : 0.1) needs Mitsuba's spectral weights at real collisions as well as at null ones.
