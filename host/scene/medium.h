@@ -10,7 +10,7 @@
 // | albedo                  | float, rgb or volume | 0.75      | single-scattering albedo in [0, 1]    |
 // | scale                   | float                | 1         | multiplies sigma_t, ≥ 0               |
 // | sample_emitters         | boolean              | true      | light-sample from scattering points   |
-// | has_spectral_extinction | boolean              | true      | Mitsuba's sampling choice; the mean is the same either way |
+// | has_spectral_extinction | boolean              | true      | Mitsuba's sampling choice; rcache always weights per channel (the same mean where sigma_t is grey) |
 // | <phase>                 | isotropic or hg (g in (−1, 1), default 0.8) | isotropic |        |
 // A homogeneous medium's extinction is one value everywhere: Mitsuba samples distances with the
 // majorant sigma_t at the origin, so a sigma_t volume is read there too.
