@@ -76,7 +76,7 @@ int Loader::buildMedium(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   } else {
     m.density = sigmaT;
     m.scale = scale;
-    m.majorant = scale * maxComponent(sigmaT->maximum());
+    m.majorant = scale * sigmaT->largestValue();
     if (!std::isfinite(m.majorant)) e.failParam("sigma_t", "the majorant 'scale' · max 'sigma_t' is not finite");
     const Bounds3 box = sigmaT->bounds();
     const double across = double(m.majorant) * glm::length(box.hi - box.lo);

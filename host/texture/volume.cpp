@@ -105,6 +105,7 @@ class GridVolume final : public Volume {
   Color minimum() const override { return min_; }
   Color maximum() const override { return max_; }
   Bounds3 bounds() const override { return bounds_; }
+  float largestValue() const override { return data_.maxValue >= 0.0f ? data_.maxValue : maxComponent(max_); }
 
  private:
   Color voxel(size_t i) const {

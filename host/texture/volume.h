@@ -10,6 +10,8 @@
 // | wrap_mode   | string    | clamp     | repeat, mirror or clamp                                 |
 // | raw         | boolean   | false     | RGB variants read values as stored either way            |
 // | to_world    | transform | identity  | places the grid's unit cube [0,1]³ in the world          |
+// | use_grid_bbox | boolean | false     | the file's bounds (min, max) are the cube, to_world after |
+// | max_value   | float     | the data's | the largest value (a heterogeneous medium's majorant), ≥ the data's |
 // Voxel centres sit at (i + ½)/resolution of the unit cube (Dr.Jit's Texture3f, as Mitsuba's grid
 // reads it); a 1-channel grid gives grey. A constvolume takes a to_world too: it places nothing
 // but the volume's bounds, which a heterogeneous medium confines itself to.
@@ -42,6 +44,9 @@ class Volume {
   virtual bool constant() const { return false; }
   // Where the volume is defined: its to_world's unit cube (a heterogeneous medium's extent).
   virtual Bounds3 bounds() const = 0;
+  // Mitsuba's Volume::max: the largest value of any channel, or a gridvolume's `max_value` (what a
+  // heterogeneous medium's majorant scales).
+  virtual float largestValue() const { return maxComponent(maximum()); }
 };
 
 using VolumePtr = std::shared_ptr<const Volume>;
@@ -54,6 +59,7 @@ struct GridVolumeData {
   std::array<uint32_t, 3> size{0, 0, 0};  // voxels along x, y, z
   uint32_t channels = 1;                  // 1 or 3
   std::vector<float> values;              // ((z·size_y + y)·size_x + x)·channels + channel
+  float maxValue = -1.0f;                 // Mitsuba's `max_value` where given (≥ 0), else −1
 };
 
 // toLocal: world → the grid's unit cube (the inverse of to_world).

@@ -1,6 +1,7 @@
 // <medium>, <phase>, <volume> and the volume texture as the loader reads them (scene/medium.h,
 // texture/volume.h): values from Mitsuba's definitions, and one precise file:line error per
 // hostile input.
+#include <array>
 #include <cstring>
 
 #include "scene_test_util.h"
@@ -10,7 +11,8 @@ namespace rc::test {
 namespace {
 
 // A `.vol` file (scene/volume_grid_file.h) of x·y·z voxels with `channels` float32 values each.
-std::string volFile(int x, int y, int z, int channels, const std::vector<float>& values) {
+std::string volFile(int x, int y, int z, int channels, const std::vector<float>& values,
+                    const std::array<float, 6>& bounds = {0, 0, 0, 0, 0, 0}) {
   std::string s = "VOL\x03";
   auto i32 = [&](int32_t v) {
     for (int i = 0; i < 4; ++i) s.push_back(static_cast<char>((static_cast<uint32_t>(v) >> (8 * i)) & 0xff));
@@ -22,7 +24,7 @@ std::string volFile(int x, int y, int z, int channels, const std::vector<float>&
   };
   i32(1);
   i32(x), i32(y), i32(z), i32(channels);
-  for (int i = 0; i < 6; ++i) f32(0.0f);
+  for (const float b : bounds) f32(b);
   for (float v : values) f32(v);
   return s;
 }
@@ -119,6 +121,7 @@ TEST(MediumLoad, GridVolumeTrilinearNearestAndWrapModes) {
 TEST(MediumLoad, HeterogeneousMediumTakesItsBoundsAndMajorantFromSigmaT) {
   TempDir dir;
   dir.write("d.vol", volFile(2, 1, 1, 1, {0.5f, 2.0f}));
+  dir.write("b.vol", volFile(2, 1, 1, 1, {0.5f, 2.0f}, {-1, 0, 0, 3, 2, 0.5f}));
   const Scene s = loadScene(dir.write("s.xml", sceneXml(R"(
   <medium type="heterogeneous" id="smoke">
     <volume type="gridvolume" name="sigma_t">
@@ -129,8 +132,16 @@ TEST(MediumLoad, HeterogeneousMediumTakesItsBoundsAndMajorantFromSigmaT) {
     <float name="albedo" value="0.9"/>
     <phase type="hg"><float name="g" value="0.4"/></phase>
   </medium>
-  <medium type="heterogeneous" id="plain"><float name="sigma_t" value="0.5"/></medium>)")));
-  ASSERT_EQ(s.media.size(), 2u);
+  <medium type="heterogeneous" id="plain"><float name="sigma_t" value="0.5"/></medium>
+  <medium type="heterogeneous" id="boxed">
+    <volume type="gridvolume" name="sigma_t">
+      <string name="filename" value="b.vol"/>
+      <boolean name="use_grid_bbox" value="true"/>
+      <float name="max_value" value="5"/>
+      <transform name="to_world"><translate x="10"/></transform>
+    </volume>
+  </medium>)")));
+  ASSERT_EQ(s.media.size(), 3u);
   const Medium& smoke = s.media[0];
   EXPECT_FALSE(smoke.homogeneous);
   EXPECT_FLOAT_EQ(smoke.majorant, 6.0f);
@@ -144,6 +155,13 @@ TEST(MediumLoad, HeterogeneousMediumTakesItsBoundsAndMajorantFromSigmaT) {
   EXPECT_EQ(plain.density->bounds().lo, Vec3(0.0f));
   EXPECT_EQ(plain.density->bounds().hi, Vec3(1.0f));
   EXPECT_EQ(plain.albedo->eval(Vec3(0.0f)), Color(0.75f));
+  // use_grid_bbox: the file's bounds (−1,0,0)…(3,2,0.5) are the cube, then to_world; max_value is
+  // the majorant.
+  const Medium& boxed = s.media[2];
+  EXPECT_EQ(boxed.density->bounds().lo, Vec3(9, 0, 0));
+  EXPECT_EQ(boxed.density->bounds().hi, Vec3(13, 2, 0.5f));
+  EXPECT_NEAR(boxed.extinctionAt(Vec3(11, 1, 0.25f)).r, 1.25f, 1e-5f);
+  EXPECT_FLOAT_EQ(boxed.majorant, 5.0f);
 }
 
 // Hostile heterogeneous media: negative or non-finite densities, a majorant that overflows, and one
@@ -166,6 +184,10 @@ TEST(MediumLoad, HostileHeterogeneousMediaAreOnePreciseError) {
   expectError([&] { load(medium(grid("ok.vol") + R"(<float name="scale" value="1e6"/>)")); },
               {"h.xml:3", "expected null collisions per ray", "lower 'scale'"});
   expectError([&] { load(medium(R"(<float name="scale" value="nan"/>)")); }, {"h.xml:4", "scale", "not a finite number"});
+  expectError([&] { load(medium(R"(<volume type="gridvolume" name="sigma_t"><string name="filename" value="ok.vol"/>
+    <float name="max_value" value="1.5"/></volume>)")); }, {"h.xml:5", "'max_value' must be finite and at least the grid's largest value 2"});
+  expectError([&] { load(medium(R"(<volume type="gridvolume" name="sigma_t"><string name="filename" value="ok.vol"/>
+    <boolean name="use_grid_bbox" value="true"/></volume>)")); }, {"h.xml:4", "singular"});  // the file's bounds are all 0
   // Empty (zero majorant) is a vacuum, not an error.
   EXPECT_EQ(load(medium(R"(<float name="sigma_t" value="0"/>)")).media.at(0).majorant, 0.0f);
 }
