@@ -8,13 +8,13 @@ renders (seeds) per renderer at the same spp, against one common high-spp refere
   export DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM-19.so
   nice -n 19 /root/.cache/rcache/bench-venv/bin/python bench/equal_spp_noise.py --res 128 --spp 64 \
       --seeds 8 --spp-ref 4096 [--scenes envmap_product corridor] [-D max_depth=2] \
-      [--rcache old=/path/to/old/rcache --rcache new=build/rcache] [--json-out FILE]
+      [--rcache old=/path/to/old/rcache --rcache new=build/rcache] [--integrator rcache] [--json-out FILE]
 
 Per scene (the file as is, plus -D; both renderers use the file's sampler and reconstruction filter):
   ref       Mitsuba (--variant) at --spp-ref with the `independent` sampler, seed 0 (kept in --outdir
             and reused by later runs with the same scene, res, -D and spp-ref);
   mitsuba   Mitsuba at --spp, seeds 1 … --seeds (kept and reused too);
-  LABEL     each --rcache build, `--integrator path` at --spp, seeds 1 … --seeds.
+  LABEL     each --rcache build, `--integrator path` (or --integrator) at --spp, seeds 1 … --seeds.
 Figures per renderer:
   relmse    relMSE against ref, averaged over the seeds (bench/mitsuba_crosscheck.py's definition)
   relvar    the same normalisation applied to the per-pixel variance across the seeds
@@ -55,7 +55,7 @@ def mitsuba_image(mi, scene_path, sampler, spp, seed, out, args, extra):
 
 
 def rcache_image(mi, binary, scene_path, seed, out, args, extra):
-    cmd = [binary, scene_path, "-o", out, "--integrator", "path", "--spp", str(args.spp), "-D", "res=%d" % args.res,
+    cmd = [binary, scene_path, "-o", out, "--integrator", args.integrator, "--spp", str(args.spp), "-D", "res=%d" % args.res,
            "-D", "spp=%d" % args.spp, "-t", str(args.threads), "--seed", str(seed), "--quiet"]
     for k, v in extra.items():
         cmd += ["-D", "%s=%s" % (k, v)]
@@ -81,6 +81,7 @@ def main():
     ap.add_argument("--seeds", type=int, default=8)
     ap.add_argument("--spp-ref", type=int, default=4096)
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--integrator", default="path", help="rcache's --integrator (e.g. rcache: its pilot's fallback)")
     ap.add_argument("--variant", default="llvm_ad_rgb")
     ap.add_argument("--outdir", default="/tmp/rcache_equal_spp_noise")
     ap.add_argument("--json-out", default=None)
