@@ -10,7 +10,8 @@ renders (seeds) per renderer at the same spp, against one common high-spp refere
       --seeds 8 --spp-ref 4096 [--scenes envmap_product corridor] [-D max_depth=2] \
       [--rcache old=/path/to/old/rcache --rcache new=build/rcache] [--integrator rcache] [--json-out FILE]
 
-Per scene (the file as is, plus -D; both renderers use the file's sampler and reconstruction filter):
+Per scene (the file as is, plus -D; both renderers use the file's sampler, or --sampler, and the file's
+reconstruction filter):
   ref       Mitsuba (--variant) at --spp-ref with the `independent` sampler, seed 0 (kept in --outdir
             and reused by later runs with the same scene, res, -D and spp-ref);
   mitsuba   Mitsuba at --spp, seeds 1 … --seeds (kept and reused too);
@@ -57,6 +58,8 @@ def mitsuba_image(mi, scene_path, sampler, spp, seed, out, args, extra):
 def rcache_image(mi, binary, scene_path, seed, out, args, extra):
     cmd = [binary, scene_path, "-o", out, "--integrator", args.integrator, "--spp", str(args.spp), "-D", "res=%d" % args.res,
            "-D", "spp=%d" % args.spp, "-t", str(args.threads), "--seed", str(seed), "--quiet"]
+    if args.sampler:
+        cmd += ["--sampler", args.sampler]
     for k, v in extra.items():
         cmd += ["-D", "%s=%s" % (k, v)]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
@@ -81,6 +84,7 @@ def main():
     ap.add_argument("--seeds", type=int, default=8)
     ap.add_argument("--spp-ref", type=int, default=4096)
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--sampler", default=None, help="both renderers' sampler instead of the file's (independent, ldsampler)")
     ap.add_argument("--integrator", default="path", help="rcache's --integrator (e.g. rcache: its pilot's fallback)")
     ap.add_argument("--variant", default="llvm_ad_rgb")
     ap.add_argument("--outdir", default="/tmp/rcache_equal_spp_noise")
@@ -102,7 +106,9 @@ def main():
         scene_path = os.path.join(args.scenes_dir, name + ".xml")
         base = os.path.join(args.outdir, tag(name, args, extra))
         ref = mitsuba_image(mi, scene_path, "independent", args.spp_ref, 0, "%s_ref%d.exr" % (base, args.spp_ref), args, extra)
-        mitsuba = [mitsuba_image(mi, scene_path, None, args.spp, s, "%s_mi%d_s%d.exr" % (base, args.spp, s), args, extra)
+        if args.sampler:
+            base += "_" + args.sampler  # the seeds' images, not the reference (always `independent`)
+        mitsuba = [mitsuba_image(mi, scene_path, args.sampler, args.spp, s, "%s_mi%d_s%d.exr" % (base, args.spp, s), args, extra)
                    for s in seeds]
         row = dict(scene=name, res=args.res, spp=args.spp, seeds=args.seeds, spp_ref=args.spp_ref, defines=extra,
                    mitsuba=figures(mitsuba, ref))
