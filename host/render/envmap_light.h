@@ -6,9 +6,14 @@
 //     u = (x + 0.5) / W (periodic in φ) and v = y / (H − 1) (the first and last rows lie on the
 //     poles, clamped in θ) — so a sharp change between two rows is a ramp over one row spacing;
 //   images smaller than 2×3 are padded by replicating the last column / row (Bitmap::pad_to).
-// Importance sampling is piecewise constant over the cells between texel centres (W cells in φ,
-// H − 1 in θ), each weighted by the exact integral of the bilinear luminance times the mean sinθ
-// of its band; pdf() evaluates that same density, so light sampling and MIS stay consistent.
+// Importance sampling follows Mitsuba's warp (a Hierarchical2D over luminance × sinθ at the texel
+// centres): the density in (u, v) is the bilinear interpolation of d = luminance(texel) · sin(θ_row)
+// between texel centres, normalised. A cell between four texel centres (W cells in φ, H − 1 in θ) is
+// drawn by its exact integral (the mean of its corners' d), then a point within it from the
+// bilinear patch itself (render/distribution.h, sampleLinear). pdf() evaluates that same density, so
+// light sampling and MIS stay consistent; radiance / pdf varies within a cell only through colour
+// and the ratio sinθ / bilinear sinθ, where a piecewise-constant density left the full ramp of a
+// bright texel's bilinear footprint in it.
 //
 // | parameter (XML) | meaning                                      | default  |
 // |-----------------|----------------------------------------------|----------|
@@ -54,17 +59,19 @@ class EnvmapLight {
 
  private:
   int width_ = 0, height_ = 0;  // after padding
-  std::vector<Color> texels_;    // scaled radiance, row-major, top row first
+  // Per texel (row-major, top row first): scaled radiance in xyz, the sampling weight
+  // luminance · sin(θ_row) in w — one bilinear interpolation gives both.
+  std::vector<Vec4> texels_;
   Mat3 toWorld_{1.0f}, toLocal_{1.0f};
   PiecewiseConstant2D cells_;  // the W × (H − 1) cells between texel centres: bands, then cells within one
-  std::vector<double> cellPdfUv_;  // density in (u, v) ∈ [0,1]² per cell
+  // Solid-angle density = interpolated weight × pdfScale_ / sinθ: W·(H − 1) / Σ cell means / 2π².
+  float pdfScale_ = 0.0f;
   double meanLuminance_ = 0.0;
 
-  Color texel(int x, int y) const { return texels_[static_cast<size_t>(y) * width_ + x]; }
+  const Vec4& texel(int x, int y) const { return texels_[static_cast<size_t>(y) * width_ + x]; }
   Vec3 toLocal(const Vec3& dirWorld) const { return glm::normalize(toLocal_ * dirWorld); }
-  Color bilinear(const Vec2& uv) const;
-  float pdfLocal(const Vec3& dLocal, const Vec2& uv) const;
-  size_t cellOf(const Vec2& uv) const;
+  Vec4 bilinear(const Vec2& uv) const;
+  Lookup lookupLocal(const Vec2& uv, float sinTheta) const;
 };
 
 }  // namespace rc
