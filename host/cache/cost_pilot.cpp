@@ -331,7 +331,7 @@ CostPilotReport runCostPilot(const CostPilotInputs& in) {
   report.choice = chooseByCost(std::move(est), in.spp);
   report.ran = report.choice.chosen >= 0;
   if (rc.empty()) {
-    report.reason = "no candidate's pilot fits cost_pilot_share of the path-traced render: the share pilot decides";
+    report.reason = "no candidate's pilot fits cost_pilot_share of the path-traced render: the fill's predicted payoff decides";
     report.seconds = secondsSince(start);
     return report;
   }

@@ -1,0 +1,114 @@
+#include "cache/fill_payoff.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "cache/record_coherence.h"
+#include "cache/rng_salts.h"
+#include "core/parallel.h"
+#include "core/rng.h"
+#include "render/path_integrator.h"
+
+namespace rc {
+
+namespace {
+
+// Points at which L and f are measured: a standard error of f of a few percent, for four path
+// samples per point (two of them direct lighting only), about 1 % of one spp at 512².
+constexpr size_t kPayoffPoints = 1024;
+// Mitsuba's max_depth of direct lighting only: the camera vertex and one bounce.
+constexpr int kDirectDepth = 2;
+
+// Weighted as core/image_metrics.h's relMSE weights a pixel's error: 1 / (mean² + 0.01).
+double relWeight(double mean) { return 1.0 / (mean * mean + 0.01); }
+
+}  // namespace
+
+double pixelsPerRecord(double q, double offsetPx, double rMaxPx) {
+  const double cap = kPiD * rMaxPx * rMaxPx;
+  if (q >= 1.0) return cap;
+  const double rho = 2.0 * offsetPx / (kPiD * (1.0 - std::max(0.0, q)));
+  return std::min(cap, kPiD * rho * rho);
+}
+
+FillPayoff predictFillPayoff(const FillPayoffFigures& f) {
+  FillPayoff p;
+  p.measured = true;
+  p.figures = f;
+  const double N = double(std::max(1, f.spp)), S = std::max(1.0, f.recordRays);
+  p.fillRays = f.hitShare * f.recordShare * 2.0 * S / std::max(1e-9, f.pixelsPerRecord);
+  p.cacheRays = p.fillRays + (1.0 + f.overhead) * N * f.raysPerSample;
+  const double fs = std::clamp(f.indirectShare, 0.0, 1.0) * std::clamp(f.servedShare, 0.0, 1.0);
+  p.pathEqualSpp = N / (1.0 - fs + fs * N / S);
+  p.pathRays = p.pathEqualSpp * f.raysPerSample;
+  p.pays = p.cacheRays <= p.pathRays;
+  char buf[400];
+  std::snprintf(buf, sizeof(buf),
+                "%s: rcache predicted at %.3g rays per pixel (fill %.3g: %.2f px per record), the path tracer at "
+                "its error %.3g (%.3g spp × %.3g rays; indirect share of its variance %.2f)",
+                p.pays ? "the fill can pay" : "path traced, the fill cannot pay", p.cacheRays, p.fillRays,
+                f.pixelsPerRecord, p.pathRays, p.pathEqualSpp, f.raysPerSample, f.indirectShare);
+  p.reason = buf;
+  return p;
+}
+
+FillPayoff measureFillPayoff(const RcacheRun& run, const IntegratorSettings& settings, const FallbackDecision& share) {
+  const int W = run.width, H = run.height;
+  const int stride = std::max(1, int(std::sqrt(double(W) * H / double(kPayoffPoints))));
+  std::vector<Ray> rays;
+  std::vector<uint64_t> seeds;
+  for (int y = stride / 2; y < H; y += stride)
+    for (int x = stride / 2; x < W; x += stride) {
+      rays.push_back(run.camera.generate(Vec2(float(x) + 0.5f, float(y) + 0.5f)));
+      seeds.push_back(hashMix(run.seed, uint64_t(y) * uint64_t(W) + uint64_t(x), kSaltFillPayoff));
+    }
+  IntegratorSettings direct = settings;
+  if (direct.maxDepth < 0 || direct.maxDepth > kDirectDepth) direct.maxDepth = kDirectDepth;
+  // Two samples of each estimator per point; the rays of the path tracer's samples are counted.
+  std::vector<Color> full(2 * rays.size()), directOnly(2 * rays.size());
+  auto sample = [&](const IntegratorSettings& s, std::vector<Color>& out) {
+    parallelFor(out.size(), 64, [&](size_t b, size_t e) {
+      for (size_t i = b; i < e; ++i) {
+        Rng rng(seeds[i / 2], 1 + (i % 2));
+        out[i] = pathRadiance(run.ctx, s, rays[i / 2], rng);
+      }
+    });
+  };
+  const uint64_t before = run.ctx.accel.raysTraced();
+  sample(settings, full);
+  const double pathRays = double(run.ctx.accel.raysTraced() - before);
+  sample(direct, directOnly);
+  double vAll = 0.0, vDirect = 0.0;
+  for (size_t k = 0; k < rays.size(); ++k) {
+    const double a = luminance(full[2 * k]), b = luminance(full[2 * k + 1]);
+    const double c = luminance(directOnly[2 * k]), d = luminance(directOnly[2 * k + 1]);
+    if (!std::isfinite(a + b + c + d)) continue;
+    const double w = relWeight(0.5 * (a + b));
+    vAll += w * 0.5 * (a - b) * (a - b);
+    vDirect += w * 0.5 * (c - d) * (c - d);
+  }
+  FillPayoffFigures f;
+  f.spp = run.spp;
+  f.hitShare = share.gridPoints ? double(share.pilotPoints) / double(share.gridPoints) : 1.0;
+  f.recordShare = share.pilotPoints ? double(share.coherencePoints) / double(share.pilotPoints) : 0.0;
+  f.servedShare = share.servedShare;
+  f.pixelsPerRecord = pixelsPerRecord(share.neighbourServedShare, share.neighbourOffsetPx, run.params.rMaxPx);
+  f.recordRays = run.params.rays;
+  f.raysPerSample = full.empty() ? 1.0 : pathRays / double(full.size());
+  f.indirectShare = vAll > 0.0 ? std::clamp(1.0 - vDirect / vAll, 0.0, 1.0) : 0.0;
+  f.overhead = kFinalPassOverhead;
+  return predictFillPayoff(f);
+}
+
+void reportFillPayoff(const FillPayoff& p, RenderStats& stats) {
+  if (!p.measured) return;
+  stats.setText("fill_payoff", p.reason);
+  stats.set("fill_payoff_rays_per_pixel", p.cacheRays);
+  stats.set("fill_payoff_path_rays_per_pixel", p.pathRays);
+  stats.set("fill_payoff_indirect_share", p.figures.indirectShare);
+  stats.set("fill_payoff_rays_per_sample", p.figures.raysPerSample);
+}
+
+}  // namespace rc
