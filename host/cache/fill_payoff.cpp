@@ -15,9 +15,12 @@ namespace rc {
 
 namespace {
 
-// Points at which L and f are measured: a standard error of f of a few percent, for four path
-// samples per point (two of them direct lighting only), about 1 % of one spp at 512².
-constexpr size_t kPayoffPoints = 1024;
+// Points at which L and f are measured: four path samples each (two of them direct lighting
+// only), at most 1/64 of the render's samples (its cost must stay within the few percent the
+// issue allows where the image is path traced), at most 1024 (a standard error of f of a few
+// percent) and at least 64.
+constexpr double kPayoffSampleShare = 1.0 / 64.0;
+constexpr double kMaxPayoffPoints = 1024.0, kMinPayoffPoints = 64.0;
 // Mitsuba's max_depth of direct lighting only: the camera vertex and one bounce.
 constexpr int kDirectDepth = 2;
 
@@ -56,7 +59,9 @@ FillPayoff predictFillPayoff(const FillPayoffFigures& f) {
 
 FillPayoff measureFillPayoff(const RcacheRun& run, const IntegratorSettings& settings, const FallbackDecision& share) {
   const int W = run.width, H = run.height;
-  const int stride = std::max(1, int(std::sqrt(double(W) * H / double(kPayoffPoints))));
+  const double points = std::clamp(double(W) * H * std::max(1, run.spp) * kPayoffSampleShare / 4.0, kMinPayoffPoints,
+                                   kMaxPayoffPoints);
+  const int stride = std::max(1, int(std::sqrt(double(W) * H / points)));
   std::vector<Ray> rays;
   std::vector<uint64_t> seeds;
   for (int y = stride / 2; y < H; y += stride)

@@ -25,7 +25,8 @@
 // lower it, but by less than the interpolation adds at the floor radius), rays of every kind cost
 // alike, and f is measured as 1 − V_d/V (the covariance of the two parts counted as indirect),
 // from two samples of the path tracer and two of its direct-lighting estimator (max_depth 2) at
-// each of kPayoffPoints points, each weighted as relMSE weights its pixel.
+// each of 64–1024 points (at most 1/64 of the render's samples), each weighted as relMSE weights
+// its pixel.
 #include <cstddef>
 #include <string>
 
