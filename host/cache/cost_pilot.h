@@ -78,7 +78,9 @@ struct CostPilotReport {
   CostChoice choice;
   int pilotWidth = 0, pilotHeight = 0, pilotSpp = 0;
   double seconds = 0.0;  // the pilot's own cost
-  std::vector<CandidateKind> skipped;  // not tried: their pilot would not fit its budget
+  // Not tried: their pilot would not fit its budget (all of them, with ran false, where that was
+  // known before the path tracer's pilot images).
+  std::vector<CandidateKind> skipped;
   std::string reason;    // why it did not run, or the decision
   std::string json() const;  // the candidates' estimates, for --stats
 };

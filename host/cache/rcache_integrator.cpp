@@ -171,8 +171,7 @@ void RcachePasses::chooseTechnique(const Vec3& lo, const Vec3& hi) {
   if (kinds.empty()) return;
   cost_ = runCostPilot({ctx_, settings_, params_, tables_, backend_, lo, hi, spp_, run_->seed, run_->lowDiscrepancy,
                         kinds});
-  if (!cost_.ran) return;  // not run (small image, crop window) or interrupted: the share pilot's verdict stands
-  if (cost_.choice.candidates.size() < 2) {
+  if (!cost_.skipped.empty() && cost_.choice.candidates.size() < 2) {
     // No variant's pilot fit its budget: whether the fill can pay at all, predicted (cache/fill_payoff.h).
     if (fallback_.pathTrace || fallback_.coherencePoints == 0) return;
     payoff_ = measureFillPayoff(*run_, settings_, fallback_);
@@ -182,6 +181,8 @@ void RcachePasses::chooseTechnique(const Vec3& lo, const Vec3& hi) {
     }
     return;
   }
+  // Not run (small image, crop window) or interrupted: the share pilot's verdict stands.
+  if (!cost_.ran || cost_.choice.candidates.size() < 2) return;
   const CandidateKind chosen = cost_.choice.candidates[static_cast<size_t>(cost_.choice.chosen)].kind;
   if (chosen == CandidateKind::RcacheLobeSplit && params_.lobeSplit == Mode::Auto) {
     fallback_ = withSplit;
