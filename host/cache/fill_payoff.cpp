@@ -9,20 +9,18 @@
 #include "cache/rng_salts.h"
 #include "core/parallel.h"
 #include "core/rng.h"
+#include "render/direct_light.h"
 #include "render/path_integrator.h"
 
 namespace rc {
 
 namespace {
 
-// Points at which L and f are measured: four path samples each (two of them direct lighting
-// only), at most 1/64 of the render's samples (its cost must stay within the few percent the
+// Points at which L and f are measured: four samples each (two of them direct light only), at most 1/64 of the render's samples (its cost must stay within the few percent the
 // issue allows where the image is path traced), at most 1024 (a standard error of f of a few
 // percent) and at least 64.
 constexpr double kPayoffSampleShare = 1.0 / 64.0;
 constexpr double kMaxPayoffPoints = 1024.0, kMinPayoffPoints = 64.0;
-// Mitsuba's max_depth of direct lighting only: the camera vertex and one bounce.
-constexpr int kDirectDepth = 2;
 
 // Weighted as core/image_metrics.h's relMSE weights a pixel's error: 1 / (mean² + 0.01).
 double relWeight(double mean) { return 1.0 / (mean * mean + 0.01); }
@@ -58,58 +56,75 @@ FillPayoff predictFillPayoff(const FillPayoffFigures& f) {
 }
 
 FillPayoff measureFillPayoff(const RcacheRun& run, const IntegratorSettings& settings, const FallbackDecision& share) {
+  if (run.lowDiscrepancy) {
+    FillPayoff p;
+    p.reason = "not predicted: under a low-discrepancy sampler the error does not fall as 1/spp";
+    return p;
+  }
   const int W = run.width, H = run.height;
   const double points = std::clamp(double(W) * H * std::max(1, run.spp) * kPayoffSampleShare / 4.0, kMinPayoffPoints,
                                    kMaxPayoffPoints);
   const int stride = std::max(1, int(std::sqrt(double(W) * H / points)));
-  std::vector<Ray> rays;
+  std::vector<Vec2> filmPos;
   std::vector<uint64_t> seeds;
   for (int y = stride / 2; y < H; y += stride)
     for (int x = stride / 2; x < W; x += stride) {
-      rays.push_back(run.camera.generate(Vec2(float(x) + 0.5f, float(y) + 0.5f)));
+      filmPos.emplace_back(float(x) + 0.5f, float(y) + 0.5f);
       seeds.push_back(hashMix(run.seed, uint64_t(y) * uint64_t(W) + uint64_t(x), kSaltFillPayoff));
     }
-  IntegratorSettings direct = settings;
-  if (direct.maxDepth < 0 || direct.maxDepth > kDirectDepth) direct.maxDepth = kDirectDepth;
-  // Two samples of each estimator per point; the rays of the path tracer's samples are counted.
-  std::vector<Color> full(2 * rays.size()), directOnly(2 * rays.size());
-  auto sample = [&](const IntegratorSettings& s, std::vector<Color>& out) {
-    parallelFor(out.size(), 64, [&](size_t b, size_t e) {
-      for (size_t i = b; i < e; ++i) {
-        Rng rng(seeds[i / 2], 1 + (i % 2));
-        out[i] = pathRadiance(run.ctx, s, rays[i / 2], rng);
-      }
-    });
-  };
+  std::vector<Primary> prim;
+  run.primaries.trace(filmPos, std::vector<int>(filmPos.size(), -1), seeds, prim);
+  const CacheEngine& engine = run.engine;
+  // Two path samples per point (their rays counted), and two of what the final pass leaves noisy
+  // there: at a cached point the emission seen and the light-sampling half of its direct light from
+  // the lights the records do not carry (engine.directLightContext); elsewhere the whole path.
+  std::vector<Color> full(2 * prim.size()), kept(2 * prim.size());
   const uint64_t before = run.ctx.accel.raysTraced();
-  sample(settings, full);
+  parallelFor(full.size(), 64, [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      Rng rng(seeds[i / 2], 1 + (i % 2));
+      full[i] = pathRadiance(run.ctx, settings, run.camera.generate(filmPos[i / 2]), rng);
+    }
+  });
   const double pathRays = double(run.ctx.accel.raysTraced() - before);
-  sample(direct, directOnly);
-  double vAll = 0.0, vDirect = 0.0;
-  for (size_t k = 0; k < rays.size(); ++k) {
+  parallelFor(kept.size(), 64, [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      const ShadePoint& sp = prim[i / 2].sp;
+      if (!sp.active || !engine.hasIndirect(sp) || !isCached(engine.technique(sp))) {
+        kept[i] = full[i];
+        continue;
+      }
+      Rng rng(seeds[i / 2], 3 + (i % 2));
+      BsdfPtr pointBsdf;  // a spatially varying BSDF at this point (Bsdf::at)
+      const Bsdf& bsdf = bsdfAt(*run.ctx.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf);
+      kept[i] = prim[i / 2].Le + lightStrategyMis(engine.directLightContext(sp), sp.hit, sp.frame, sp.wo, bsdf, rng, 1);
+    }
+  });
+  double vAll = 0.0, vKept = 0.0;
+  for (size_t k = 0; k < prim.size(); ++k) {
     const double a = luminance(full[2 * k]), b = luminance(full[2 * k + 1]);
-    const double c = luminance(directOnly[2 * k]), d = luminance(directOnly[2 * k + 1]);
+    const double c = luminance(kept[2 * k]), d = luminance(kept[2 * k + 1]);
     if (!std::isfinite(a + b + c + d)) continue;
     const double w = relWeight(0.5 * (a + b));
     vAll += w * 0.5 * (a - b) * (a - b);
-    vDirect += w * 0.5 * (c - d) * (c - d);
+    vKept += w * 0.5 * (c - d) * (c - d);
   }
   FillPayoffFigures f;
   f.spp = run.spp;
   f.hitShare = share.gridPoints ? double(share.pilotPoints) / double(share.gridPoints) : 1.0;
   f.recordShare = share.pilotPoints ? double(share.coherencePoints) / double(share.pilotPoints) : 0.0;
-  f.servedShare = share.servedShare;
+  f.servedShare = 1.0;  // the unserved points' noise is in what the final pass leaves (above)
   f.pixelsPerRecord = pixelsPerRecord(share.neighbourServedShare, share.neighbourOffsetPx, run.params.rMaxPx);
   f.recordRays = run.params.rays;
   f.raysPerSample = full.empty() ? 1.0 : pathRays / double(full.size());
-  f.indirectShare = vAll > 0.0 ? std::clamp(1.0 - vDirect / vAll, 0.0, 1.0) : 0.0;
+  f.indirectShare = vAll > 0.0 ? std::clamp(1.0 - vKept / vAll, 0.0, 1.0) : 0.0;
   f.overhead = kFinalPassOverhead;
   return predictFillPayoff(f);
 }
 
 void reportFillPayoff(const FillPayoff& p, RenderStats& stats) {
+  if (!p.reason.empty()) stats.setText("fill_payoff", p.reason);
   if (!p.measured) return;
-  stats.setText("fill_payoff", p.reason);
   stats.set("fill_payoff_rays_per_pixel", p.cacheRays);
   stats.set("fill_payoff_path_rays_per_pixel", p.pathRays);
   stats.set("fill_payoff_indirect_share", p.figures.indirectShare);

@@ -5,7 +5,10 @@
 // geometry whose records serve only a few pixels (the lego scene at 256²–512², bench/RESULTS.md)
 // the fill then cost a hundred times the path tracer's whole render.
 //
-// Cost and error per pixel of the image, in rays, for a render of N samples per pixel:
+// Cost and error per pixel of the image, in rays, for a render of N samples per pixel (under an
+// independent sampler: errors that fall as 1/N; under a low-discrepancy one the direct light's
+// falls faster, the shares below do not hold, and nothing is predicted — on aniso_sphere at 96²,
+// 32 spp the prediction said 1.5× against the cache where it was 10× cheaper in rays):
 // - the path tracer: N·L rays (L: its rays per pixel sample, counted at the pilot's points) for
 //   a relMSE of V/N, V = V_d + V_i its one-sample variance, direct (emission and the first
 //   vertex's light) and indirect (the rest);
@@ -16,17 +19,21 @@
 //   per record at S = 512), plus the final pass's (1 + o)·N·L (o = 0.3, path_fallback.h). Its
 //   error: the direct part as the path tracer's, V_d/N; the indirect part of the served share s
 //   at best as one record's, V_i/S; the rest V_i/N. So with f = V_i/V the path tracer reaches
-//   rcache's error at n = N / (1 − f·s + f·s·N/S) samples per pixel.
+//   rcache's error at n = N / (1 − f·s + f·s·N/S) samples per pixel. f is measured as what the
+//   final pass would leave: 1 − V_kept/V, V_kept the variance of the emission seen plus the
+//   light-sampling half of the direct light from the lights records do not carry (the light
+//   split's residual) at points whose own material is cached, and of the whole path elsewhere —
+//   so the unserved points are in it, and s = 1.
 // The fill pays where rcache's rays are at most the path tracer's at that error:
 //   h·c·2S/m + (1 + o)·N·L ≤ n·L.
-// Approximated, all in the cache's favour: only level-0 records are counted (level-1 records and
+// Approximated, in the cache's favour where not said: only level-0 records are counted (level-1 records and
 // the paths continued below them are left out; on lego they were 4 per level-0 record), a
 // record's error is its own noise only (no interpolation error; blending several records would
 // lower it, but by less than the interpolation adds at the floor radius), rays of every kind cost
-// alike, and f is measured as 1 − V_d/V (the covariance of the two parts counted as indirect),
-// from two samples of the path tracer and two of its direct-lighting estimator (max_depth 2) at
-// each of 64–1024 points (at most 1/64 of the render's samples), each weighted as relMSE weights
-// its pixel.
+// alike, points served only through their continuation count as unserved (against the cache),
+// and V and V_kept come from two samples each at 64–1024 points (at most 1/64 of the render's
+// samples), each weighted as relMSE weights its pixel (the covariance of the parts counted as
+// removable).
 #include <cstddef>
 #include <string>
 
@@ -52,7 +59,7 @@ struct FillPayoffFigures {
 double pixelsPerRecord(double q, double offsetPx, double rMaxPx);
 
 struct FillPayoff {
-  bool measured = false;   // the prediction ran
+  bool measured = false;   // the prediction ran (reason says why not where it did not)
   bool pays = true;
   FillPayoffFigures figures;
   double fillRays = 0.0;      // h·c·2S/m, per pixel
