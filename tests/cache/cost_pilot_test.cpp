@@ -123,7 +123,8 @@ TEST(CostPilot, RendersWithTheCandidateItChose) {
   const auto quick = test::renderScene(s, test::rcacheSettings(s, {{"cost_pilot", "true"}}), 4, 1);
   EXPECT_EQ(test::statText(quick.stats, "cost_pilot").rfind("no candidate", 0), 0u) << test::statText(quick.stats, "cost_pilot");
   EXPECT_NE(statJson(quick.stats, "cost_pilot_candidates").find("\"tried\": false"), std::string::npos);
-  const std::string payoff = test::statText(quick.stats, "fill_payoff"), share = test::statText(unmeasured.stats, "fallback");
+  const std::string payoff = test::statText(quick.stats, "fill_payoff");
+  const std::string share = test::statText(unmeasured.stats, "fallback");
   ASSERT_FALSE(payoff.empty());
   if (payoff.rfind("path traced", 0) == 0)
     EXPECT_EQ(test::statText(quick.stats, "fallback"), payoff + " (" + share + ")");
