@@ -101,9 +101,9 @@ FillPayoff measureFillPayoff(const RcacheRun& run, const IntegratorSettings& set
       kept[i] = prim[i / 2].Le + lightStrategyMis(engine.directLightContext(sp), sp.hit, sp.frame, sp.wo, bsdf, rng, 1);
     }
   });
-  // Two samples per point make f's estimate hang on a few bright paths (corridor at 96²: 0.88,
-  // 0.01 and 0.56 at 2, 8 and 32 spp), so the decision takes the largest f of kFGroups interleaved
-  // groups of points, which errs towards the cache.
+  // Two samples per point make a pooled f hang on a few bright paths (corridor at 96²: 0.88, 0.01
+  // and 0.56 at 2, 8 and 32 spp), so f is the median of kFGroups interleaved groups of points: one
+  // such path moves one group. (The largest group's f swung lego at 256² to the cache.)
   double vAll[kFGroups] = {}, vKept[kFGroups] = {};
   for (size_t k = 0; k < prim.size(); ++k) {
     const double a = luminance(full[2 * k]), b = luminance(full[2 * k + 1]);
@@ -113,9 +113,11 @@ FillPayoff measureFillPayoff(const RcacheRun& run, const IntegratorSettings& set
     vAll[k % kFGroups] += w * 0.5 * (a - b) * (a - b);
     vKept[k % kFGroups] += w * 0.5 * (c - d) * (c - d);
   }
-  double fMax = 0.0;
+  std::vector<double> groupF;
   for (size_t g = 0; g < kFGroups; ++g)
-    if (vAll[g] > 0.0) fMax = std::max(fMax, std::clamp(1.0 - vKept[g] / vAll[g], 0.0, 1.0));
+    groupF.push_back(vAll[g] > 0.0 ? std::clamp(1.0 - vKept[g] / vAll[g], 0.0, 1.0) : 0.0);
+  std::sort(groupF.begin(), groupF.end());
+  const double fMedian = 0.5 * (groupF[kFGroups / 2 - 1] + groupF[kFGroups / 2]);
   FillPayoffFigures f;
   f.spp = run.spp;
   f.hitShare = share.gridPoints ? double(share.pilotPoints) / double(share.gridPoints) : 1.0;
@@ -124,7 +126,7 @@ FillPayoff measureFillPayoff(const RcacheRun& run, const IntegratorSettings& set
   f.pixelsPerRecord = pixelsPerRecord(share.neighbourServedShare, share.neighbourOffsetPx, run.params.rMaxPx);
   f.recordRays = run.params.rays;
   f.raysPerSample = full.empty() ? 1.0 : pathRays / double(full.size());
-  f.indirectShare = fMax;
+  f.indirectShare = fMedian;
   f.overhead = kFinalPassOverhead;
   return predictFillPayoff(f);
 }

@@ -33,7 +33,7 @@
 // alike, points served only through their continuation count as unserved (against the cache),
 // and V and V_kept come from two samples each at 64–1024 points (at most 1/64 of the render's
 // samples), each weighted as relMSE weights its pixel (the covariance of the parts counted as
-// removable); f is the largest of 8 interleaved groups of points (its estimate is noisy).
+// removable); f is the median of 8 interleaved groups of points (a pooled one is noisy).
 #include <cstddef>
 #include <string>
 
