@@ -114,6 +114,7 @@ FallbackDecision decideFallback(const RcacheRun& run) {
   size_t hits = 0;
   double servedSum = 0.0, splitSum = 0.0;
   for (size_t i = 0; i < prim.size(); ++i) hits += hit[i], servedSum += serves[i], splitSum += splitServes[i];
+  d.gridPoints = prim.size();
   d.pilotPoints = hits;
   if (hits == 0) {
     d.reason = "nothing hit";
@@ -135,6 +136,7 @@ FallbackDecision decideFallback(const RcacheRun& run) {
   // Served, but can a record serve more than its own pixel (cache/record_coherence.h)?
   const RecordCoherence coherence = measureRecordCoherence(run, filmPos, seeds, prim, ownCached);
   d.coherencePoints = coherence.points;
+  d.neighbourOffsetPx = coherence.offsetPx;
   d.neighbourServedShare = coherence.share();
   d.neighbourServedBound = coherence.upperBound();
   if (coherence.tooIncoherent()) {

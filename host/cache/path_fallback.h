@@ -22,15 +22,21 @@
 
 namespace rc {
 
+// o: the batched final pass's overhead per sample over the path tracer, the lenient end of the
+// 0.3–0.8 measured (bench/RESULTS.md), as fallback_share takes it.
+constexpr double kFinalPassOverhead = 0.3;
+
 struct FallbackDecision {
   bool pathTrace = false;
   double servedShare = 0.0;  // s: pilot points (with a surface hit) the cache would serve
   double lobeSplitShare = 0.0;  // the part of s served through lobe-split materials' bases
+  size_t gridPoints = 0;     // pilot camera rays
   size_t pilotPoints = 0;    // pilot camera rays that hit a surface
   // The coherence test (cache/record_coherence.h), where the share passed: q, the upper end of its
   // interval, and the points it tested (own material cached).
   double neighbourServedShare = 0.0, neighbourServedBound = 0.0;
   size_t coherencePoints = 0;
+  double neighbourOffsetPx = 0.0;  // δ
   std::string reason;        // for the statistics
 };
 

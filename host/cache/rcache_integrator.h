@@ -67,7 +67,8 @@
 //                       tracer's error at the requested spp (cache/cost_pilot.h); off by default:
 //                       a choice from timings is not reproducible run to run
 //   cost_pilot_share 0.05 the cost pilot's budget: a candidate is tried only while the pilot's time
-//                       stays below this share of the path tracer's predicted render
+//                       stays below this share of the path tracer's predicted render; with none
+//                       tried, the fill's predicted payoff decides (cache/fill_payoff.h)
 //   lobe_split   auto   layered materials' base from records, coat sampled (Technique::LobeSplit):
 //                       auto = the cost pilot may choose it (off where it does not
 //                       run or tries no variant) | true | false

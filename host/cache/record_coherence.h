@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "cache/path_fallback.h"
 #include "cache/primary_hits.h"
 #include "cache/rcache_run.h"
 #include "core/math.h"
@@ -43,7 +44,7 @@ namespace rc {
 // The neighbour's distance as a fraction of r_min (pixels).
 constexpr float kNeighbourOffsetOfFloor = 1.0f / 3.0f;
 // 1 + o: the pixels a record must serve to beat the path tracer at equal rays (above).
-constexpr double kMinPixelsPerRecord = 1.3;
+constexpr double kMinPixelsPerRecord = 1.0 + kFinalPassOverhead;
 // The q of a record serving kMinPixelsPerRecord pixels, at δ = ½ px (above): 1 − 2δ/√(π·1.3).
 inline double minNeighbourServed() { return 1.0 - 1.0 / std::sqrt(kPiD * kMinPixelsPerRecord); }
 // z of the one-sided bound on q the decision uses.
