@@ -155,6 +155,9 @@ def main():
                     help="offset the first seed by a stable hash of the scene's path")
     ap.add_argument("--no-mitsuba", action="store_true")
     ap.add_argument("--resume", action="store_true", help="keep Mitsuba references already in --work")
+    ap.add_argument("--compare-only", action="store_true",
+                    help="only the comparison, for scenes whose Mitsuba references --work already holds (no load, "
+                         "lenient or Mitsuba runs): e.g. --compare-integrator rcache after a run of the path tracer")
     ap.add_argument("--only", nargs="*", help="substrings of scene paths to run")
     ap.add_argument("--compare-integrator", help="compare this integrator (e.g. path, rcache) instead of the file's")
     args = ap.parse_args()
@@ -177,33 +180,38 @@ def main():
         timeout = timeout_for(rel, args)
         row = {"scene": rel, "first_seed": first}
         base = [rcache, path, "-t", str(args.threads), "--quiet"]
-        for integ in ("path", "rcache"):
+        for integ in ("path", "rcache") if not args.compare_only else ():
             rc, text = run(base + ["--integrator", integ, "--spp", "4", "-o", os.path.join(out, tag + "_" + integ + "_4.exr")],
                            timeout)
             row["load_" + integ] = rc == 0 or first_error(text)
-        rc, text = run(base + ["--lenient", "--integrator", "path", "--spp", "4", "-o", os.path.join(out, tag + "_lenient.exr")],
-                       timeout)
-        row["lenient"] = rc == 0 or first_error(text)
-        if not args.no_mitsuba:
+        if not args.compare_only:
+            rc, text = run(base + ["--lenient", "--integrator", "path", "--spp", "4", "-o", os.path.join(out, tag + "_lenient.exr")],
+                           timeout)
+            row["lenient"] = rc == 0 or first_error(text)
+        loads = row.get("load_path", True) is True  # (not checked with --compare-only: the earlier run's)
+        if args.compare_only and not all(os.path.exists(os.path.join(out, "%s_mitsuba_f%d_s%d.exr" % (tag, first - 1, k)))
+                                         for k in range(args.seeds_mitsuba)):
+            row["mitsuba"] = "no kept reference"
+        elif not args.no_mitsuba:
             # Whether Mitsuba renders it at all (4 spp), then a reference only where rcache renders too.
             ref = os.path.join(out, "%s_mitsuba_f%d_s%%d.exr" % (tag, first - 1))
             refs = [ref % k for k in range(args.seeds_mitsuba)]
-            kept = args.resume and all(os.path.exists(r) for r in refs)
+            kept = (args.resume or args.compare_only) and all(os.path.exists(r) for r in refs)
             rc, text = (0, "") if kept else run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, "4", args.variant, "1", str(first - 1)],
                                                 timeout)
             row["mitsuba"] = rc == 0 or first_error(text.strip().splitlines()[-1] if text.strip() else text)
-            if row["mitsuba"] is True and row["load_path"] is True and not kept:
+            if row["mitsuba"] is True and loads and not kept:
                 rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, str(args.spp_mitsuba // args.seeds_mitsuba),
                                 args.variant, str(args.seeds_mitsuba), str(first - 1)], timeout * 4)
                 row["mitsuba"] = rc == 0 or first_error(text)
-            if row["mitsuba"] is True and row["load_path"] is True:
+            if row["mitsuba"] is True and loads:
                 # The file's own integrator where rcache takes it (a `direct` file must be compared as
                 # direct illumination, not as the path tracer --integrator path would make of it), else
                 # the path tracer — also where the file asks for a path tracer, which rcache's `auto`
                 # would turn into its radiance cache (an approximation, not the estimator Mitsuba runs).
                 probe_stats = os.path.join(out, tag + "_auto_stats.json")
-                rc, text = run(base + ["--spp", "1", "-o", os.path.join(out, tag + "_auto_1.exr"), "--stats", probe_stats],
-                               timeout)
+                rc, text = (1, "") if args.compare_integrator else run(
+                    base + ["--spp", "1", "-o", os.path.join(out, tag + "_auto_1.exr"), "--stats", probe_stats], timeout)
                 # (The statistics name the estimator: a `direct` file runs as "path" with its own
                 # parameters, which --integrator path would drop.)
                 auto, volumetric = None, False
