@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "closed_form_image.h"
+#include "core/math.h"
 #include "core/rng.h"
 #include "render/camera.h"
 #include "render/path_integrator.h"
@@ -25,7 +26,6 @@ namespace rc::test {
 namespace {
 
 constexpr float kRho = 0.5f, kIntensity = 10.0f, kLe = 4.0f, kHalfSide = 0.6f, kSquareZ = 2.0f;
-constexpr double kPiD = 3.14159265358979323846;
 
 std::string squareInFront(bool hide, float lightZ) {
   return floorScene("<integrator type=\"path\"><integer name=\"max_depth\" value=\"2\"/><boolean name=\"hide_emitters\" value=\"" +
