@@ -4,6 +4,7 @@
 
 #include "geometry/shading_frame.h"
 #include "render/direct_light.h"
+#include "render/hidden_emitters.h"
 #include "render/light_sampler.h"
 
 namespace rc {
@@ -74,8 +75,11 @@ class BounceShader {
 
   // Lane i, whose segment w.rays[i] found `hit`: adds the emission the segment found, queues the
   // vertex's shadow ray, and queues the lane for the next bounce unless its path ends here.
-  void shade(uint32_t i, const Hit& hit) {
+  void shade(uint32_t i, const Hit& found) {
     const Ray& ray = w_.rays[i];
+    // Hidden emitters let the camera ray through (render/hidden_emitters.h); `found` stays uncopied otherwise.
+    Hit behind;
+    const Hit& hit = depth_ == 0 && settings_.hideEmitters ? (behind = behindAreaEmitters(ctx_, ray, found)) : found;
     Color& throughput = w_.throughput[i];
     // Emission found by this segment: full weight for the camera ray, MIS against light sampling after.
     if (depth_ == 0) {

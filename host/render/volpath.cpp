@@ -6,6 +6,7 @@
 
 #include "geometry/shading_frame.h"
 #include "render/direct_light.h"
+#include "render/hidden_emitters.h"
 #include "render/light_sampler.h"
 #include "render/medium_tracking.h"
 #include "render/phase_function.h"
@@ -125,7 +126,7 @@ Color volPathRadiance(const RenderContext& ctx, const IntegratorSettings& settin
     }
     if (depth >= maxDepth) break;
 
-    const Hit hit = ctx.accel.intersect(ray);
+    Hit hit = ctx.accel.intersect(ray);
 
     // ---- Free flight through the medium the ray is in ----
     if (medium >= 0) {
@@ -150,6 +151,10 @@ Color volPathRadiance(const RenderContext& ctx, const IntegratorSettings& settin
       // The flight passed the surface (or left for good); nothing passed ends the path.
       if (!(maxComponent(flight.weight) > 0.0f)) break;
     }
+
+    // A camera ray that reached a hidden area emitter goes on to what lies behind it (Mitsuba's volpath
+    // skips them once the flight has reached the surface).
+    if (depth == 0 && settings.hideEmitters) hit = behindAreaEmitters(ctx, ray, hit);
 
     // ---- Emission found by this segment ----
     if (!(depth == 0 && settings.hideEmitters))

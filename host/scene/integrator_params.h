@@ -2,7 +2,8 @@
 // The parameters every integrator shares with Mitsuba's path tracer, read once here:
 //   max_depth      -1   longest path in segments (-1 unbounded; 1 = directly visible emission only)
 //   rr_depth        5   segments before Russian roulette starts (≥ 1)
-//   hide_emitters false directly visible emitters render black
+//   hide_emitters false camera rays pass area emitters to what lies behind, an escaping camera ray
+//                       sees no environment (render/hidden_emitters.h)
 #include "scene/param_reader.h"
 #include "scene/scene.h"
 
