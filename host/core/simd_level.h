@@ -11,33 +11,4 @@ enum class SimdLevel { Baseline = 0, Avx2 = 1, Avx512 = 2 };
 SimdLevel cpuSimdLevel();
 const char* simdLevelName(SimdLevel level);
 
-// Runs `pass` (a lambda marked [[gnu::always_inline]], so that it is compiled inside the version
-// that calls it) compiled for the widest instruction set up to `level` that this CPU runs. A pass's
-// loops over lanes vectorise there; the file that calls this states the flags its passes need.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define RC_SIMD_VERSIONS 1
-template <class Pass>
-[[gnu::target("avx2")]] void runAvx2(const Pass& pass) {
-  pass();
-}
-template <class Pass>
-[[gnu::target("avx512f")]] void runAvx512(const Pass& pass) {
-  pass();
-}
-#endif
-template <class Pass>
-void runBaseline(const Pass& pass) {
-  pass();
-}
-template <class Pass>
-void runSimd(SimdLevel level, const Pass& pass) {
-  const SimdLevel run = level < cpuSimdLevel() ? level : cpuSimdLevel();
-#ifdef RC_SIMD_VERSIONS
-  if (run == SimdLevel::Avx512) return runAvx512(pass);
-  if (run == SimdLevel::Avx2) return runAvx2(pass);
-#endif
-  (void)run;
-  runBaseline(pass);
-}
-
 }  // namespace rc

@@ -6,6 +6,11 @@
 
 namespace rc {
 
+namespace {
+// True when the BSDF has a lobe that light sampling can hit (a non-delta component).
+bool hasSmoothLobe(const Bsdf& bsdf) { return (bsdf.lobes() & (kLobeDiffuse | kLobeGlossy)) != 0; }
+}  // namespace
+
 Color emitted(const Scene& scene, const Hit& hit, const Vec3& wo) { return emitted(scene.emitters, hit, wo); }
 
 Color emitted(const std::vector<Emitter>& emitters, const Hit& hit, const Vec3& wo) {
@@ -24,17 +29,12 @@ bool visible(const Accel& accel, const Hit& hit, const LightSample& ls) { return
 std::optional<UnshadowedLight> lightSampleUnshadowed(const RenderContext& ctx, const Hit& hit, const Frame& frame,
                                                      const Vec3& woLocal, const Bsdf& bsdf, Rng& rng,
                                                      int misLightSamples, int misBsdfSamples) {
-  // Always draw the same three numbers so the stream stays aligned whatever happens below.
-  const LightDraw d = drawLight(rng);
-  if (!samplesLight(ctx, bsdf)) return std::nullopt;
-  return unshadowedLight(hit, frame, woLocal, bsdf, ctx.lights.sample(hit.p, d.u, d.uLight), misLightSamples,
-                         misBsdfSamples);
-}
-
-std::optional<UnshadowedLight> unshadowedLight(const Hit& hit, const Frame& frame, const Vec3& woLocal,
-                                               const Bsdf& bsdf,
-                                               const std::optional<LightSample>& ls, int misLightSamples,
-                                               int misBsdfSamples) {
+  // Always draw the same three numbers so the stream stays aligned whatever happens below; the
+  // point on the light first, so that it gets a low-discrepancy pair of its own.
+  const Vec2 u = rng.next2D();
+  const float uLight = rng.nextFloat();
+  if (ctx.lights.empty() || !hasSmoothLobe(bsdf)) return std::nullopt;
+  const std::optional<LightSample> ls = ctx.lights.sample(hit.p, u, uLight);
   if (!ls || !(ls->pdf > 0.0f || ls->delta)) return std::nullopt;
   const Vec3 wiLocal = frame.toLocal(ls->wi);
   // The BSDF's density only where MIS weighs the sample, then with its value in one call.

@@ -69,28 +69,6 @@ struct UnshadowedLight {
 std::optional<UnshadowedLight> lightSampleUnshadowed(const RenderContext& ctx, const Hit& hit, const Frame& frame,
                                                      const Vec3& woLocal, const Bsdf& bsdf, Rng& rng,
                                                      int misLightSamples, int misBsdfSamples = 1);
-// lightSampleUnshadowed in its three steps, for a wave that draws many light samples at once
-// (render/path_wavefront.cpp): the numbers it draws, whether the vertex samples a light at all,
-// and the rest once the light sample `ls` is taken (LightSampler::sample with the drawn numbers).
-struct LightDraw {
-  Vec2 u;        // the point on the light
-  float uLight;  // the emitter
-};
-inline LightDraw drawLight(Rng& rng) {
-  // The point on the light first, so that it gets a low-discrepancy pair of its own.
-  LightDraw d;
-  d.u = rng.next2D();
-  d.uLight = rng.nextFloat();
-  return d;
-}
-// Light sampling needs an emitter and a lobe it can hit (a non-delta one).
-inline bool samplesLight(const RenderContext& ctx, const Bsdf& bsdf) {
-  return !ctx.lights.empty() && (bsdf.lobes() & (kLobeDiffuse | kLobeGlossy)) != 0;
-}
-std::optional<UnshadowedLight> unshadowedLight(const Hit& hit, const Frame& frame, const Vec3& woLocal,
-                                               const Bsdf& bsdf,
-                                               const std::optional<LightSample>& ls, int misLightSamples,
-                                               int misBsdfSamples = 1);
 
 // lightStrategyMis over a batch of shading points, their shadow rays traced in one occlusion query
 // (BatchQuery): out[i] = lightStrategyMis(ctx, points[i]…, rngs[i], lightSamples), bit for bit

@@ -68,20 +68,13 @@ class Distribution1D {
       }
       i = std::min(static_cast<size_t>(base - cdf), bins - 1);
     }
-    i = skipEmptyBins(cdf, bins, i);
-    if (remapped) *remapped = remapInBin(cdf, i, uu);
+    while (i + 1 < bins && cdf[i + 1] - cdf[i] == 0.0) ++i;  // never return an empty bin
+    if (remapped) {
+      const double p = cdf[i + 1] - cdf[i];
+      const double r = p > 0.0 ? (uu - cdf[i]) / p : 0.5;
+      *remapped = static_cast<float>(std::min(std::max(r, 0.0), 0.99999994));
+    }
     return i;
-  }
-  // The two steps after the search, shared with the lane-wise search of a wave (EnvmapLight::
-  // sampleWave): never return an empty bin; u rescaled to [0, 1) within bin i.
-  static size_t skipEmptyBins(const double* cdf, size_t bins, size_t i) {
-    while (i + 1 < bins && cdf[i + 1] - cdf[i] == 0.0) ++i;
-    return i;
-  }
-  static float remapInBin(const double* cdf, size_t i, double uu) {
-    const double p = cdf[i + 1] - cdf[i];
-    const double r = p > 0.0 ? (uu - cdf[i]) / p : 0.5;
-    return static_cast<float>(std::min(std::max(r, 0.0), 0.99999994));
   }
   // Tables of at most this many bins are searched by counting instead of through the guide.
   static constexpr size_t kSmallBins = 8;
@@ -133,10 +126,6 @@ class PiecewiseConstant2D {
   }
   size_t rows() const { return rows_.size(); }
   size_t cols() const { return cols_; }
-  // The tables sample() searches: the marginal's cdf (rows + 1 entries) and the conditionals' cdfs
-  // ([rows][cols + 1]), for a search written over many samples at once.
-  const double* rowCdf() const { return rows_.cdf().data(); }
-  const double* columnCdfs() const { return cdf_.data(); }
 
   struct Cell {
     size_t column = 0, row = 0;

@@ -74,18 +74,19 @@ EnvmapLight::Lookup EnvmapLight::lookup(const Vec3& dirWorld) const {
 
 EnvmapLight::Sample EnvmapLight::sample(Vec2 u) const {
   const PiecewiseConstant2D::Cell c = cells_.sample(u.x, u.y);
-  const EnvmapTexels t = tables();
-  const int i = static_cast<int>(c.column), j = static_cast<int>(c.row);
-  const Vec2 uv = t.cellUv(i, j, c.remappedX, c.remappedY);
+  const size_t i = c.column, j = c.row;
+  float uu = (static_cast<float>(i) + c.remappedX + 0.5f) / width_;
+  if (uu >= 1.0f) uu -= 1.0f;
+  const float vv = (static_cast<float>(j) + c.remappedY) / (height_ - 1);
   // Radiance and density at the sampled (u, v) and cell directly, as Mitsuba's envmap does: no
   // round trip through the direction's atan2/acos (which agrees up to float rounding).
   float sinTheta;
-  const Vec3 dLocal = envDirection(uv.x, uv.y, &sinTheta);
+  const Vec3 dLocal = envDirection(uu, vv, &sinTheta);
   Sample s;
-  s.dir = t.world(dLocal);
+  s.dir = glm::normalize(toWorld_ * dLocal);
   if (!(sinTheta > 0.0f)) return s;  // pdf 0: the poles carry no solid angle
-  s.value.radiance = t.bilinear(uv);
-  s.value.pdf = t.cellPdf(static_cast<size_t>(j) * width_ + i, sinTheta);
+  s.value.radiance = tables().bilinear(Vec2(uu, vv));
+  s.value.pdf = static_cast<float>(cellPdfUv_[j * width_ + i] / (2.0 * kPiD * kPiD * sinTheta));
   return s;
 }
 

@@ -57,18 +57,6 @@ class EnvmapLight {
     Lookup value;
   };
   Sample sample(Vec2 u) const;
-  // sample() of many sample pairs, in passes over arrays that vectorise (envmap_light_batch.cpp).
-  struct SampleWave {
-    std::vector<float> ux, uy;                    // in: the pairs u
-    std::vector<float> dx, dy, dz, r, g, b, pdf;  // out: sample()'s dir and value, bit for bit
-    std::vector<int32_t> row, column;             // scratch: the sampled cell
-    std::vector<float> u, v, sinTheta;            // scratch: the sampled (u, v) and sin θ there
-    void fit(size_t n);                           // every array holds at least n entries
-    Sample at(size_t k) const { return Sample{Vec3(dx[k], dy[k], dz[k]), Lookup{Color(r[k], g[k], b[k]), pdf[k]}}; }
-  };
-  // sample(Vec2(w.ux[k], w.uy[k])) for k < n, with the widest instruction set up to `level` that
-  // the CPU has.
-  void sampleWave(SampleWave& w, size_t n, SimdLevel level = SimdLevel::Avx512) const;
   // Luminance averaged over the sphere of directions (for emitter selection by power).
   double meanLuminance() const { return meanLuminance_; }
 
@@ -82,9 +70,7 @@ class EnvmapLight {
 
   Color texel(int x, int y) const { return texels_[static_cast<size_t>(y) * width_ + x]; }
   static_assert(sizeof(Color) == 3 * sizeof(float), "tables() reads texels_ as an array of floats");
-  EnvmapTexels tables() const {
-    return EnvmapTexels{&texels_.data()->r, cellPdfUv_.data(), width_, height_, toLocal_, toWorld_};
-  }
+  EnvmapTexels tables() const { return EnvmapTexels{&texels_.data()->r, cellPdfUv_.data(), width_, height_, toLocal_}; }
 };
 
 }  // namespace rc

@@ -27,10 +27,9 @@ struct EnvmapTexels {
   const float* rgb;         // width × height texels, row-major, top row first, scaled radiance
   const double* cellPdfUv;  // the W × (H − 1) cells' densities in (u, v)
   int width, height;        // after padding: width ≥ 2, height ≥ 3
-  Mat3 toLocal, toWorld;
+  Mat3 toLocal;
 
   Vec3 local(const Vec3& dirWorld) const { return glm::normalize(toLocal * dirWorld); }
-  Vec3 world(const Vec3& dirLocal) const { return glm::normalize(toWorld * dirLocal); }
   // Indexed in int (the image holds fewer than 2³¹/3 texels): a 32-bit index is what a gather takes.
   Color texel(int x, int y) const {
     const int k = 3 * (y * width + x);
@@ -66,24 +65,11 @@ struct EnvmapTexels {
     return static_cast<size_t>(j) * width + i;
   }
 
-  // Solid-angle density in `cell` where sin θ = sinTheta > 0: dω = 2π² sinθ du dv.
-  float cellPdf(size_t cell, float sinTheta) const {
-    return static_cast<float>(cellPdfUv[cell] / (2.0 * kPiD * kPiD * sinTheta));
-  }
-
   // Solid-angle density of local direction d at its (u, v): 0 at the poles (no solid angle).
   float pdf(const Vec3& d, const Vec2& uv) const {
     const float sinTheta = std::sqrt(std::max(0.0f, d.x * d.x + d.z * d.z));
-    const float density = cellPdf(cellOf(uv), sinTheta);
-    return sinTheta > 0.0f ? density : 0.0f;
-  }
-
-  // (u, v) of a sample at (remX, remY) ∈ [0, 1)² within cell (i, j), which spans the texel
-  // centres i, i + 1 (u wrapped to [0, 1)) and rows j, j + 1.
-  Vec2 cellUv(int i, int j, float remX, float remY) const {
-    float u = (static_cast<float>(i) + remX + 0.5f) / width;
-    u = u >= 1.0f ? u - 1.0f : u;
-    return Vec2(u, (static_cast<float>(j) + remY) / (height - 1));
+    const double density = cellPdfUv[cellOf(uv)] / (2.0 * kPiD * kPiD * sinTheta);
+    return sinTheta > 0.0f ? static_cast<float>(density) : 0.0f;
   }
 };
 

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "geometry/face_normal.h"
 #include "render/distribution.h"
+#include "render/envmap_light.h"
 #include "render/spot_light.h"
 
 namespace rc {
@@ -335,24 +336,13 @@ std::optional<LightSample> LightSampler::sample(const Vec3& p, Vec2 u, float uLi
       const Vec3 wi = uniformSphere(u);
       return infiniteSample(wi, im.environmentAt(wi));
     }
-    case EmitterType::Envmap:
-      return fromEnvmapSample(k, e.envmap->sample(u));
+    case EmitterType::Envmap: {
+      const EnvmapLight::Sample s = e.envmap->sample(u);
+      if (!(s.value.pdf > 0.0f)) return std::nullopt;
+      return infiniteSample(s.dir, im.environmentAt(s.dir, k, &s.value));
+    }
   }
   return std::nullopt;
-}
-
-int LightSampler::envmapSelected(float uLight) const {
-  const Impl& im = *impl_;
-  if (im.entries.empty()) return -1;
-  const int k = static_cast<int>(im.select.sample(uLight));
-  return im.selectProb(k) > 0.0f && im.entries[k].type == EmitterType::Envmap ? k : -1;
-}
-
-const EnvmapLight& LightSampler::envmap(int entry) const { return *impl_->entries[entry].envmap; }
-
-std::optional<LightSample> LightSampler::fromEnvmapSample(int entry, const EnvmapLight::Sample& s) const {
-  if (!(s.value.pdf > 0.0f)) return std::nullopt;
-  return infiniteSample(s.dir, impl_->environmentAt(s.dir, entry, &s.value));
 }
 
 float LightSampler::pdf(const Hit& lightHit, const Vec3& from) const {

@@ -9,7 +9,6 @@
 
 #include "core/math.h"
 #include "geometry/accel.h"
-#include "render/envmap_light.h"
 #include "scene/scene.h"
 
 namespace rc {
@@ -38,12 +37,6 @@ class LightSampler {
   // Samples a light as seen from point p. u: 2-D sample on the emitter, uLight: picks the emitter.
   // Empty when the scene has no emitter or the sample carries no energy (back side of an area light).
   std::optional<LightSample> sample(const Vec3& p, Vec2 u, float uLight) const;
-  // sample() split for a wave (render/path_wavefront.cpp), so that the envmap samples of many
-  // lanes are drawn in one vectorised pass (EnvmapLight::sampleWave): the emitter entry that uLight
-  // selects when it is an envmap (else −1), that envmap, and sample()'s answer from its sample s.
-  int envmapSelected(float uLight) const;
-  const EnvmapLight& envmap(int entry) const;
-  std::optional<LightSample> fromEnvmapSample(int entry, const EnvmapLight::Sample& s) const;
   // Solid-angle pdf (selection included) with which sample() from `from` returns the emitter point
   // `lightHit` (an area emitter hit). 0 when lightHit is not on an emitter.
   float pdf(const Hit& lightHit, const Vec3& from) const;

@@ -35,9 +35,6 @@ void prepare(PathWave& w, size_t count) {
   fit(w.waveHits, count);
   fit(w.escapedEntry, count);
   w.escaped.fit(count);
-  fit(w.lightDraw, count);
-  fit(w.envmapSample, count);
-  w.envmapSamples.fit(count);
 }
 
 // Writes the ids id(0) … id(n − 1) to out ordered by the octant of their direction dir(id) (a stable
@@ -97,30 +94,6 @@ class BounceShader {
 
   size_t shadows = 0, survivors = 0;
 
-  // Before shade(): draws the light-sample numbers of every lane that shade() lets sample a light
-  // (its first draws there), and samples the envmap for the lanes whose draw picks it, in one
-  // pass over them (only the first envmap a draw picks: lanes of any other sample theirs in shade()).
-  void drawLights(const Hit* hits, size_t live) {
-    int batched = -1;
-    size_t n = 0;
-    EnvmapLight::SampleWave& env = w_.envmapSamples;
-    for (size_t k = 0; k < live; ++k) {
-      const uint32_t i = w_.active[k];
-      if (!shadesVertex(hits[depth_ == 0 ? i : k])) continue;
-      const LightDraw d = drawLight(rngs_[i]);
-      w_.lightDraw[i] = d;
-      w_.envmapSample[i] = -1;
-      const int entry = ctx_.lights.envmapSelected(d.uLight);
-      if (entry < 0 || (batched >= 0 && entry != batched)) continue;
-      batched = entry;
-      env.ux[n] = d.u.x;
-      env.uy[n] = d.u.y;
-      w_.envmapSample[i] = static_cast<int32_t>(n++);
-    }
-    if (n > 0) ctx_.lights.envmap(batched).sampleWave(env, n);
-    envmapEntry_ = batched;
-  }
-
   // Lane i, whose segment w.rays[i] found `hit`: adds the emission the segment found, queues the
   // vertex's shadow ray, and queues the lane for the next bounce unless its path ends here.
   void shade(uint32_t i, const Hit& hit) {
@@ -134,9 +107,12 @@ class BounceShader {
       w_.radiance[i] += throughput * (hit.valid() ? emitterMis(ctx_, w_.prevP[i], ray.d, hit, w_.prevPdf[i], w_.prevDelta[i] != 0)
                                                   : environmentMis(escapedEnvironment(i), w_.prevPdf[i], w_.prevDelta[i] != 0));
     }
-    if (!shadesVertex(hit)) return;
-    // The frame a normal/bump map turns, and the BSDF at this point (Bsdf::at, Bsdf::atFrame).
+    if (!hit.valid()) return;
+    // Mitsuba: a vertex may extend the path only while the path has fewer than max_depth segments.
+    if (settings_.maxDepth >= 0 && depth_ + 1 >= settings_.maxDepth) return;
     const std::vector<BsdfPtr>& bsdfs = ctx_.scene.bsdfs;
+    if (hit.bsdf < 0 || hit.bsdf >= static_cast<int>(bsdfs.size()) || !bsdfs[hit.bsdf]) return;
+    // The frame a normal/bump map turns, and the BSDF at this point (Bsdf::at, Bsdf::atFrame).
     const Frame frame = shadingFrame(*bsdfs[hit.bsdf], hit, -ray.d);
     BsdfPtr pointBsdf;
     const Bsdf& bsdf = bsdfAt(*bsdfs[hit.bsdf], hit, frame, hit.ns, pointBsdf);
@@ -144,16 +120,8 @@ class BounceShader {
     // A textured factor scales everything this vertex reflects (Bsdf::tint), not its emission.
     if (bsdf.tinted()) throughput *= bsdf.tint(hit.uv, wo);
     Rng& rng = rngs_[i];
-    // Light sampling (its numbers drawn in drawLights): its shadow ray joins the bounce's occlusion
-    // query; the value is added after.
-    std::optional<LightSample> ls;
-    if (samplesLight(ctx_, bsdf)) {
-      const LightDraw& d = w_.lightDraw[i];
-      const int32_t batched = w_.envmapSample[i];
-      ls = batched >= 0 ? ctx_.lights.fromEnvmapSample(envmapEntry_, w_.envmapSamples.at(batched))
-                        : ctx_.lights.sample(hit.p, d.u, d.uLight);
-    }
-    if (std::optional<UnshadowedLight> light = unshadowedLight(hit, frame, wo, bsdf, ls, 1)) {
+    // Light sampling: its shadow ray joins the bounce's occlusion query; the value is added after.
+    if (std::optional<UnshadowedLight> light = lightSampleUnshadowed(ctx_, hit, frame, wo, bsdf, rng, 1)) {
       w_.shadowRays[shadows] = light->shadow;
       w_.shadowValue[shadows] = throughput * light->value;
       w_.shadowLane[shadows] = i;
@@ -168,17 +136,6 @@ class BounceShader {
   Rng* rngs_;
   PathWave& w_;
   const int depth_;
-  int envmapEntry_ = -1;  // the light sampler's entry of the envmap sampled in drawLights
-
-  // Whether lane's segment ends at a vertex that shade() shades beyond its emission (light
-  // sample, BSDF sample).
-  bool shadesVertex(const Hit& hit) const {
-    if (!hit.valid()) return false;
-    // Mitsuba: a vertex may extend the path only while the path has fewer than max_depth segments.
-    if (settings_.maxDepth >= 0 && depth_ + 1 >= settings_.maxDepth) return false;
-    const std::vector<BsdfPtr>& bsdfs = ctx_.scene.bsdfs;
-    return hit.bsdf >= 0 && hit.bsdf < static_cast<int>(bsdfs.size()) && bsdfs[hit.bsdf];
-  }
 
   // What lookUpEscaped found along lane i's escaped segment (LightSampler::environmentLookup's
   // numbers; zero without an environment).
@@ -238,7 +195,6 @@ void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& setti
     }
     lookUpEscaped(ctx, settings, w, hits, live, depth);
     BounceShader shader(ctx, settings, rngs, w, depth);
-    shader.drawLights(hits, live);
     for (size_t k = 0; k < live; ++k) shader.shade(w.active[k], hits[depth == 0 ? w.active[k] : k]);
     // Each lane has at most one shadow ray per bounce, added before the next bounce's emission:
     // the same order of additions as pathRadiance, whatever the order in which the rays are traced.

@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "core/rng.h"
-#include "render/direct_light.h"
 #include "render/integrator.h"
 #include "render/light_sampler.h"
 
@@ -40,12 +39,6 @@ struct PathWave {
   // one vectorised pass), and per lane the entry of its segment.
   LightSampler::EnvironmentWave escaped;
   std::vector<uint32_t> escapedEntry;
-  // This bounce's light-sample numbers per lane, drawn before shading so that the lanes whose draw
-  // picks the envmap get their samples from one vectorised pass: per lane its entry in
-  // envmapSamples (−1: sampled on its own when shaded).
-  std::vector<LightDraw> lightDraw;
-  std::vector<int32_t> envmapSample;
-  EnvmapLight::SampleWave envmapSamples;
 };
 
 // Radiance of `count` camera samples: cameraRays[i] with its first hit cameraHits[i] (already
