@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "core/fast_trig.h"
 
 namespace rc {
 
@@ -13,16 +12,6 @@ Vec3 envDirection(float u, float v, float* sinTheta) {
   const float st = std::sin(theta);
   if (sinTheta) *sinTheta = st;
   return Vec3(st * std::sin(phi), std::cos(theta), -st * std::cos(phi));
-}
-
-// Runs for every escaped ray (camera and BSDF-sampled): inline atan2 and acos (core/fast_trig.h)
-// instead of libm's calls, to within a few float ulps of them.
-Vec2 envUv(const Vec3& d) {
-  float u = atan2Fast(d.x, -d.z) * (0.5f * kInvPi);
-  if (u < 0.0f) u += 1.0f;
-  if (u >= 1.0f) u = 0.0f;
-  const float v = acosFast(glm::clamp(d.y, -1.0f, 1.0f)) * kInvPi;
-  return Vec2(u, v);
 }
 
 EnvmapLight::EnvmapLight(int width, int height, const std::vector<Color>& pixels, float scale, const Mat3& toWorld)
@@ -61,37 +50,18 @@ EnvmapLight::EnvmapLight(int width, int height, const std::vector<Color>& pixels
   meanLuminance_ = solid > 0.0 ? total / solid : 0.0;
 }
 
-Color EnvmapLight::eval(const Vec3& dirWorld) const { return Color(bilinear(envUv(toLocal(dirWorld)))); }
-
-Vec4 EnvmapLight::bilinear(const Vec2& uv) const {
-  const float fx = uv.x * width_ - 0.5f;  // texel x's centre at u = (x + 0.5) / W
-  const float fy = uv.y * (height_ - 1);  // texel y's centre at v = y / (H − 1)
-  int x0 = floorToInt(fx);
-  const float tx = fx - static_cast<float>(x0);
-  // Wrapped into [0, W): for u ∈ [0, 1], x0 ∈ [−1, W − 1] and one +W wraps it without an integer
-  // division (a hot one); the remainder only for u outside [0, 1].
-  if (x0 < 0) x0 += width_;
-  if (x0 < 0 || x0 >= width_) x0 = (x0 % width_ + width_) % width_;
-  const int x1 = x0 + 1 < width_ ? x0 + 1 : 0;
-  const int y0 = std::min(height_ - 2, std::max(0, floorToInt(fy)));
-  const float ty = glm::clamp(fy - y0, 0.0f, 1.0f);
-  const Vec4 top = (1.0f - tx) * texel(x0, y0) + tx * texel(x1, y0);
-  const Vec4 bottom = (1.0f - tx) * texel(x0, y0 + 1) + tx * texel(x1, y0 + 1);
-  return (1.0f - ty) * top + ty * bottom;
-}
-
-EnvmapLight::Lookup EnvmapLight::lookupLocal(const Vec2& uv, float sinTheta) const {
-  const Vec4 t = bilinear(uv);
-  Lookup out{Color(t), 0.0f};
-  if (sinTheta > 0.0f) out.pdf = t.w * pdfScale_ / sinTheta;  // the poles carry no solid angle
-  return out;
+Color EnvmapLight::eval(const Vec3& dirWorld) const {
+  const EnvmapTexels t = tables();
+  return Color(t.bilinear(envUv(t.local(dirWorld))));
 }
 
 float EnvmapLight::pdf(const Vec3& dirWorld) const { return lookup(dirWorld).pdf; }
 
 EnvmapLight::Lookup EnvmapLight::lookup(const Vec3& dirWorld) const {
-  const Vec3 d = toLocal(dirWorld);
-  return lookupLocal(envUv(d), std::sqrt(std::max(0.0f, d.x * d.x + d.z * d.z)));
+  const EnvmapTexels t = tables();
+  const Vec3 d = t.local(dirWorld);
+  const Vec4 c = t.bilinear(envUv(d));
+  return Lookup{Color(c), t.density(c, EnvmapTexels::sinThetaOf(d))};
 }
 
 EnvmapLight::Sample EnvmapLight::sample(Vec2 u) const {
@@ -111,7 +81,9 @@ EnvmapLight::Sample EnvmapLight::sample(Vec2 u) const {
   const Vec3 dLocal = envDirection(uu, vv, &sinTheta);
   Sample s;
   s.dir = glm::normalize(toWorld_ * dLocal);
-  s.value = lookupLocal(Vec2(uu, vv), sinTheta);
+  const EnvmapTexels t = tables();
+  const Vec4 c = t.bilinear(Vec2(uu, vv));
+  s.value = Lookup{Color(c), t.density(c, sinTheta)};
   return s;
 }
 

@@ -23,14 +23,15 @@
 #include <vector>
 
 #include "core/math.h"
+#include "core/simd_level.h"
 #include "render/distribution.h"
+#include "render/envmap_texels.h"
 
 namespace rc {
 
-// Mitsuba's lat-long mapping of a local direction and its inverse (u, v ∈ [0, 1]); *sinTheta
-// (optional) gets sin(πv).
+// The inverse of Mitsuba's lat-long mapping envUv (render/envmap_texels.h), u, v ∈ [0, 1];
+// *sinTheta (optional) gets sin(πv).
 Vec3 envDirection(float u, float v, float* sinTheta = nullptr);
-Vec2 envUv(const Vec3& dirLocal);
 
 class EnvmapLight {
  public:
@@ -47,6 +48,13 @@ class EnvmapLight {
     float pdf = 0.0f;
   };
   Lookup lookup(const Vec3& dirWorld) const;
+  // lookup() of n world directions (x[k], y[k], z[k]), added to running sums as LightSampler sums
+  // its infinite emitters: radiance[k] += value, pdf[k] += selectProb · density (pdf null: the
+  // density is not needed). The same operations as lookup(), so the same numbers bit for bit; one
+  // pass over arrays that the compiler vectorises (envmap_light_batch.cpp), run with the widest
+  // instruction set up to `level` that the CPU has.
+  void lookupAdd(const float* x, const float* y, const float* z, size_t n, float selectProb, float* r, float* g,
+                 float* b, float* pdf, SimdLevel level = SimdLevel::Avx512) const;
   // A world direction drawn from the luminance-weighted density, with the radiance and density
   // there (pdf 0 when the map is black: then there is nothing to sample).
   struct Sample {
@@ -69,9 +77,8 @@ class EnvmapLight {
   double meanLuminance_ = 0.0;
 
   const Vec4& texel(int x, int y) const { return texels_[static_cast<size_t>(y) * width_ + x]; }
-  Vec3 toLocal(const Vec3& dirWorld) const { return glm::normalize(toLocal_ * dirWorld); }
-  Vec4 bilinear(const Vec2& uv) const;
-  Lookup lookupLocal(const Vec2& uv, float sinTheta) const;
+  static_assert(sizeof(Vec4) == 4 * sizeof(float), "tables() reads texels_ as an array of floats");
+  EnvmapTexels tables() const { return EnvmapTexels{&texels_.data()->x, pdfScale_, width_, height_, toLocal_}; }
 };
 
 }  // namespace rc

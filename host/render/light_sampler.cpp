@@ -385,4 +385,35 @@ LightSampler::EnvironmentLookup LightSampler::environmentLookup(const Vec3& dir)
   return impl_->environmentAt(dir);
 }
 
+void LightSampler::EnvironmentWave::fit(size_t n) {
+  for (std::vector<float>* v : {&x, &y, &z, &r, &g, &b, &pdf})
+    if (v->size() < n) v->resize(n);
+}
+
+void LightSampler::environmentLookups(EnvironmentWave& w, size_t n, bool withPdf) const {
+  // environmentAt's sums, in its order of entries, one entry at a time over all directions.
+  const Impl& im = *impl_;
+  std::fill_n(w.r.begin(), n, 0.0f);
+  std::fill_n(w.g.begin(), n, 0.0f);
+  std::fill_n(w.b.begin(), n, 0.0f);
+  std::fill_n(w.pdf.begin(), n, 0.0f);
+  for (int k : im.infinite) {
+    const Entry& e = im.entries[k];
+    const float pSel = im.selectProb(k);
+    if (e.type == EmitterType::Envmap) {
+      e.envmap->lookupAdd(w.x.data(), w.y.data(), w.z.data(), n, pSel, w.r.data(), w.g.data(), w.b.data(),
+                          withPdf ? w.pdf.data() : nullptr);
+      continue;
+    }
+    const Color radiance = im.emitters[e.emitter].radiance;
+    const float pdf = pSel * (1.0f / (4.0f * kPi));
+    for (size_t j = 0; j < n; ++j) {
+      w.r[j] += radiance.r;
+      w.g[j] += radiance.g;
+      w.b[j] += radiance.b;
+      if (withPdf) w.pdf[j] += pdf;
+    }
+  }
+}
+
 }  // namespace rc
