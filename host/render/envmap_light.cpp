@@ -82,8 +82,8 @@ EnvmapLight::Sample EnvmapLight::sample(Vec2 u) const {
   Sample s;
   s.dir = glm::normalize(toWorld_ * dLocal);
   const EnvmapTexels t = tables();
-  const Vec4 c = t.bilinear(Vec2(uu, vv));
-  s.value = Lookup{Color(c), t.density(c, sinTheta)};
+  const Vec4 at = t.bilinear(Vec2(uu, vv));
+  s.value = Lookup{Color(at), t.density(at, sinTheta)};
   return s;
 }
 
