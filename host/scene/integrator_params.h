@@ -11,6 +11,17 @@ namespace rc {
 
 void readPathParams(ParamReader& in, IntegratorSettings& settings);
 
+// Mitsuba's differentiable path tracers (`prb`, `prb_basic`, `prb_projective`, `direct_projective`)
+// render the primal image of `path` (the same expectation; they differ in how they estimate
+// derivatives, which rcache does not compute). Their base class reads max_depth with a default of 6
+// (not −1), rr_depth and hide_emitters; the projective ones also take their gradient sampling
+// settings (sppc, sppp, sppi, guiding, guiding_proj, guiding_rounds, project_seed), which change no
+// primal pixel and are accepted and checked only. `direct_projective` is `prb_projective` at
+// max_depth 2 whatever the file says (Mitsuba overrides it).
+void readPrbParams(ParamReader& in, IntegratorSettings& settings);
+void readProjectivePrbParams(ParamReader& in, IntegratorSettings& settings);
+void readDirectProjectiveParams(ParamReader& in, IntegratorSettings& settings);
+
 // Whether a path of `segments` segments is within max_depth (-1: always): the one test of the
 // limit (a shade point at depth d gets direct light over d+1 segments, indirect over d+2).
 inline bool withinMaxDepth(int maxDepth, int segments) { return maxDepth < 0 || segments <= maxDepth; }
