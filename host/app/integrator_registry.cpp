@@ -30,6 +30,7 @@ const std::vector<IntegratorEntry> kEntries = {
     {"prb", false, true, readPrbParams, makeDefaultPathIntegrator},
     {"prb_basic", false, true, readPrbParams, makeDefaultPathIntegrator},
     {"prb_projective", false, true, readProjectivePrbParams, makeDefaultPathIntegrator},
+    {"prbvolpath", false, true, readPrbParams, makeDefaultPathIntegrator},
     {"direct_projective", false, false, readDirectProjectiveParams, makeDefaultPathIntegrator},
     {"rcache", true, false, readRcacheParamsInto, makeRcacheIntegrator},
 };

@@ -78,7 +78,7 @@ bool sceneUsesMedia(const Scene& scene) {
 
 bool followsMedia(const Scene& scene, const std::string& integrator) {
   const std::string& estimator = integrator == "rcache" ? scene.integrator.type : integrator;
-  return (estimator == "volpath" || estimator == "volpathmis") && sceneUsesMedia(scene);
+  return (estimator == "volpath" || estimator == "volpathmis" || estimator == "prbvolpath") && sceneUsesMedia(scene);
 }
 
 Color shadowTransmittance(const RenderContext& ctx, Ray ray, int medium, Rng& rng) {

@@ -11,8 +11,9 @@ namespace rc {
 
 void readPathParams(ParamReader& in, IntegratorSettings& settings);
 
-// Mitsuba's differentiable path tracers (`prb`, `prb_basic`, `prb_projective`, `direct_projective`)
-// render the primal image of `path` (the same expectation; they differ in how they estimate
+// Mitsuba's differentiable path tracers (`prb`, `prb_basic`, `prb_projective`, `direct_projective`,
+// and `prbvolpath`, which follows media as `volpath` does) render the primal image of `path` /
+// `volpath` (the same expectation; they differ in how they estimate
 // derivatives, which rcache does not compute). Their base class reads max_depth with a default of 6
 // (not −1), rr_depth and hide_emitters; the projective ones also take their gradient sampling
 // settings (sppc, sppp, sppi, guiding, guiding_proj, guiding_rounds, project_seed), which change no

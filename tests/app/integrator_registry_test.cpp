@@ -57,7 +57,7 @@ TEST(IntegratorRegistry, ParameterNamesRouteDefines) {
 // their base class (ad/integrators/common.py), direct_projective forces 2; the projective ones'
 // gradient settings are accepted, and prb does not take them.
 TEST(IntegratorRegistry, DifferentiableIntegratorsAreTheirPrimalPathTracer) {
-  for (const char* name : {"prb", "prb_basic", "prb_projective"}) {
+  for (const char* name : {"prb", "prb_basic", "prb_projective", "prbvolpath"}) {
     IntegratorSettings st;
     ParamReader none(nullptr);
     findIntegrator(name)->readParams(none, st);

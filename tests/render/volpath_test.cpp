@@ -92,13 +92,16 @@ TEST(Volpath, CameraMediumAttenuatesEverything) {
   expectNear(estimate(w, IntegratorSettings(), rayAt({0, 0, 0}, {0, 0, 1}), 2000, 3), Color(1.0f, 0.0f, 1.0f), "fog");
 }
 
-// Mitsuba's volpath and volpathmis follow media, its path and direct render surfaces only; rcache
-// renders what the file's integrator would.
+// Mitsuba's volpath, volpathmis and prbvolpath (the differentiable one, rendered as its primal
+// image) follow media, its path, prb and direct render surfaces only; rcache renders what the file's
+// integrator would.
 TEST(Volpath, OnlyVolumetricIntegratorsFollowMedia) {
   Scene s = mediumSphere(homogeneous(Color(1.0f), Color(0.5f)), nullBsdf());
   s.integrator.type = "volpath";
   EXPECT_TRUE(followsMedia(s, "volpath"));
   EXPECT_TRUE(followsMedia(s, "volpathmis"));
+  EXPECT_TRUE(followsMedia(s, "prbvolpath"));
+  EXPECT_FALSE(followsMedia(s, "prb"));
   EXPECT_TRUE(followsMedia(s, "rcache"));
   EXPECT_FALSE(followsMedia(s, "path"));
   EXPECT_FALSE(followsMedia(s, "direct"));
