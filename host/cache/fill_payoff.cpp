@@ -7,6 +7,7 @@
 
 #include "cache/record_coherence.h"
 #include "cache/rng_salts.h"
+#include "core/image_metrics.h"
 #include "core/parallel.h"
 #include "core/rng.h"
 #include "render/direct_light.h"
@@ -22,9 +23,6 @@ namespace {
 constexpr double kPayoffSampleShare = 1.0 / 64.0;
 constexpr double kMaxPayoffPoints = 1024.0, kMinPayoffPoints = 64.0;
 constexpr size_t kFGroups = 8;
-
-// Weighted as core/image_metrics.h's relMSE weights a pixel's error: 1 / (mean² + 0.01).
-double relWeight(double mean) { return 1.0 / (mean * mean + 0.01); }
 
 }  // namespace
 
@@ -109,9 +107,10 @@ FillPayoff measureFillPayoff(const RcacheRun& run, const IntegratorSettings& set
     const double a = luminance(full[2 * k]), b = luminance(full[2 * k + 1]);
     const double c = luminance(kept[2 * k]), d = luminance(kept[2 * k + 1]);
     if (!std::isfinite(a + b + c + d)) continue;
-    const double w = relWeight(0.5 * (a + b));
-    vAll[k % kFGroups] += w * 0.5 * (a - b) * (a - b);
-    vKept[k % kFGroups] += w * 0.5 * (c - d) * (c - d);
+    // Each pair's variance, weighted as relMSE weighs a pixel's error around their mean.
+    const double mean = 0.5 * (a + b);
+    vAll[k % kFGroups] += 0.5 * relMseTerm(a - b, mean);
+    vKept[k % kFGroups] += 0.5 * relMseTerm(c - d, mean);
   }
   std::vector<double> groupF;
   for (size_t g = 0; g < kFGroups; ++g)

@@ -100,8 +100,7 @@ class BounceShader {
   void shade(uint32_t i, const Hit& found) {
     const Ray& ray = w_.rays[i];
     // Hidden emitters let the camera ray through (render/hidden_emitters.h); `found` stays uncopied otherwise.
-    Hit behind;
-    const Hit& hit = depth_ == 0 && settings_.hideEmitters ? (behind = behindAreaEmitters(ctx_, ray, found)) : found;
+    const Hit& hit = depth_ == 0 && settings_.hideEmitters ? (behind_ = behindAreaEmitters(ctx_, ray, found)) : found;
     Color& throughput = w_.throughput[i];
     // Emission found by this segment: full weight for the camera ray, MIS against light sampling after.
     if (depth_ == 0) {
@@ -140,6 +139,7 @@ class BounceShader {
   Rng* rngs_;
   PathWave& w_;
   const int depth_;
+  Hit behind_;  // what a camera ray found behind hidden area emitters (reused: not built per lane)
 
   // What lookUpEscaped found along lane i's escaped segment (LightSampler::environmentLookup's
   // numbers; zero without an environment).
