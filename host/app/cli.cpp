@@ -243,6 +243,10 @@ int runRender(const std::vector<std::string>& args) {
   t.write = secondsSince(tWrite);
 
   recordImageStats(stats, ra, output, *integrator, backend.get(), image, t);
+  // --integrator renders its name whatever the file asks for (a direct file as rcache is global
+  // illumination), so the statistics name the file's integrator wherever another one rendered it.
+  if (chooseIntegrator(ra.integrator, scene) != scene.integrator.type)
+    stats.setText("file_integrator", scene.integrator.type);
   stats.set("time_s", secondsSince(tStart));
   if (gCancel) stats.set("interrupted", 1);
   reportStats(stats, ra);

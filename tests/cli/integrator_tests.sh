@@ -38,10 +38,15 @@ if cmp -s "$TMP/direct.exr" "$TMP/path.exr"; then fail direct_has_no_indirect "e
 # --integrator overrides the file: a direct file rendered as path is the path image.
 render override "$TMP/direct.xml" --integrator path -D max_depth=4 || fail override "$(cat "$TMP/override.err")"
 same integrator_flag_overrides_file path override
+"$RC" "$TMP/direct.xml" --integrator path -D max_depth=4 --quiet -t 2 -o "$TMP/override2.exr" --stats "$TMP/override.json" \
+  && grep -q '"file_integrator": "direct"' "$TMP/override.json" && pass override_names_file_integrator \
+  || fail override_names_file_integrator "$(cat "$TMP/override.json")"
 
 # auto renders the file's integrator unless it is a path tracer (then rcache, the scene being cacheable).
-render auto_direct "$TMP/direct.xml" || fail auto_direct "exit $?"
+render auto_direct "$TMP/direct.xml" --stats "$TMP/auto_direct.json" || fail auto_direct "exit $?"
 same auto_keeps_direct direct auto_direct
+if grep -q file_integrator "$TMP/auto_direct.json"; then fail own_integrator_not_named_twice "$(cat "$TMP/auto_direct.json")"
+else pass own_integrator_not_named_twice; fi
 "$RC" "$DATA/tiny.xml" --quiet -t 2 -D rays=64 -o "$TMP/auto.exr" --stats "$TMP/auto.json" \
   && grep -q '"integrator": "rcache"' "$TMP/auto.json" && pass auto_path_file_uses_rcache || fail auto_path_file_uses_rcache "$(cat "$TMP/auto.json")"
 
