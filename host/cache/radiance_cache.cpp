@@ -125,7 +125,10 @@ void RadianceCache::lookupLocked(const Vec3& p, const Vec3& n, Lookup& out, bool
   }
   if (scale > 1.0f) {
     // A record whose scaled sphere holds p has its own box within (scale − 1)·a_i·R_i of p.
-    std::vector<uint32_t> ids;
+    // The candidate list is the thread's, reused: a relaxed lookup per uncovered final-pass
+    // sample otherwise grows a fresh vector through several allocations.
+    thread_local std::vector<uint32_t> ids;
+    ids.clear();
     octree_.querySphere(p, (scale - 1.0f) * maxReach_, [&](uint32_t id) { ids.push_back(id); });
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
