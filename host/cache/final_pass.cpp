@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <new>
+#include <utility>
 
 #include "cache/direct_light_batch.h"
 #include "cache/final_pass_memory.h"
@@ -260,8 +261,11 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
         new (&s.prim[i]) Primary(run_.primaries.of(filmPos[k], y * W + x, sampleSeed, rays[k], hits[k]));
         ShadePoint& sp = s.prim[i].sp;
         if (!sp.active || !withinMaxDepth(maxDepth, 2)) continue;
-        BsdfPtr& pointBsdf = batch.holders.emplace_back();  // a spatially varying BSDF at this point (Bsdf::at)
+        // A spatially varying BSDF made at this point (Bsdf::at) is kept alive by the batch; most
+        // points make none and add nothing to it.
+        BsdfPtr pointBsdf;
         const Bsdf& bsdf = bsdfAt(*run_.ctx.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf);
+        if (pointBsdf) batch.holders.push_back(std::move(pointBsdf));
         sp.lightSamples = params.lightSamples;
         // Importance-sampled points: the continuation's ray doubles as the BSDF sample
         // (lightStrategyMis); the others take directLightCheapest's estimator.
