@@ -31,7 +31,8 @@ void directLightBatch(std::vector<DirectLightJob>& jobs, Color* out, DirectLight
     if (j.estimator != DirectEstimator::Full) continue;
     const Vec2 u = j.rng.next2D();
     const float uLobe = j.rng.nextFloat();
-    if (j.lights->lights.empty()) continue;
+    // Black lights (all of the environment in the records): the BSDF ray could find no emission.
+    if (!j.lights->lights.emitsLight()) continue;
     const std::optional<BsdfSample> bs = j.bsdf->sample(j.wo, uLobe, u);
     if (!bs || maxComponent(bs->weight) <= 0.0f) continue;
     s.bsdfRays.push_back(Accel::spawnRay(*j.hit, j.frame.toWorld(bs->wi)));

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
+#include <utility>
 
 #include "cache/direct_light_batch.h"
 #include "cache/final_pass_memory.h"
 #include "cache/rng_salts.h"
 #include "core/error.h"
+#include "core/low_discrepancy.h"
 #include "core/parallel.h"
 #include "core/parallel_select.h"
 #include "render/direct_light.h"
@@ -35,19 +38,28 @@ constexpr float kSharedLookupMinCos = 0.995f;
 constexpr int kSplatStripeRows = 8;
 
 // The RNG streams, film positions and camera rays of the samples of active pixels [jb, je), in
-// sample order; `first` is the offset of the chunk's first sample.
+// sample order; `first` is the offset of the chunk's first sample. With the low-discrepancy
+// sampler, pixel j's scramble seeds are hashed once into dimensionSeeds[j − jb] (sized by the
+// caller, alive while the streams draw their prefix) instead of twice per draw of each sample.
 void generateCameraRays(const RcacheRun& run, const Film& film, int y0, const SampleRange* ranges,
                         const std::vector<size_t>& offset, const std::vector<uint32_t>& active, size_t jb, size_t je,
-                        size_t first, std::vector<Rng>& rngs, std::vector<Ray>& rays, std::vector<Vec2>& filmPos) {
+                        size_t first, std::vector<ld::PixelDimensionSeeds>& dimensionSeeds, std::vector<Rng>& rngs,
+                        std::vector<Ray>& rays, std::vector<Vec2>& filmPos) {
   const int W = run.width;
   for (size_t j = jb; j < je; ++j) {
     const size_t q = active[j];
     const int x = static_cast<int>(q % W), y = y0 + static_cast<int>(q / W);
+    // Streams keyed by the sensor pixel: a crop window draws what the full render draws there.
+    const PixelRngSeed pixelSeed =
+        pixelRngSeed(run.seed, film.sensorWidth(), film.cropX() + x, film.cropY() + y, run.lowDiscrepancy);
+    const ld::PixelDimensionSeeds* seeds = nullptr;
+    if (run.lowDiscrepancy) {
+      dimensionSeeds[j - jb] = ld::PixelDimensionSeeds(pixelSeed.lowDiscrepancySeed);
+      seeds = &dimensionSeeds[j - jb];
+    }
     for (int si = ranges[q].first; si < ranges[q].end; ++si) {
       const size_t k = offset[q] + (si - ranges[q].first) - first;
-      // Streams keyed by the sensor pixel: a crop window draws what the full render draws there.
-      rngs.push_back(pixelRng(run.seed, film.sensorWidth(), film.cropX() + x, film.cropY() + y, si,
-                              run.lowDiscrepancy));
+      seedPixelRng(rngs.emplace_back(), pixelSeed, si, seeds);
       const Vec2 crop(static_cast<float>(film.cropX()), static_cast<float>(film.cropY()));
       filmPos[k] = Vec2(static_cast<float>(x), static_cast<float>(y)) + crop + rngs[k].next2D() - crop;
       rays[k] = run.camera.generate(filmPos[k]);
@@ -214,7 +226,7 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
   // √spp of one per sample while that error falls with spp.
   const int shareGroup = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(std::max(1, run_.spp)))));
   const size_t n = offset.back();
-  s.prim = ParallelArray<Primary>(n);
+  s.prim = ParallelArray<Primary>(n, ParallelArray<Primary>::Unconstructed{});  // every sample's is made below
   s.direct.assign(n, Color(0.0f));
   s.sampleIndex.resize(n);
   s.rep.resize(n);
@@ -232,7 +244,8 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
     std::vector<Ray> rays(count);
     std::vector<Hit> hits(count);
     std::vector<Vec2> filmPos(count);
-    generateCameraRays(run_, film_, y0, ranges, offset, active, jb, je, first, rngs, rays, filmPos);
+    std::vector<ld::PixelDimensionSeeds> dimensionSeeds(run_.lowDiscrepancy ? je - jb : 0);
+    generateCameraRays(run_, film_, y0, ranges, offset, active, jb, je, first, dimensionSeeds, rngs, rays, filmPos);
     run_.ctx.accel.intersect(rays.data(), hits.data(), count, true);
     // The chunk's direct light as one batch (shadow and BSDF rays as packets).
     thread_local DirectLightChunk batch;
@@ -245,11 +258,14 @@ void FinalPass::traceAndLight(int y0, const SampleRange* ranges, const std::vect
         s.sampleIndex[i] = si;
         const uint64_t sensorPixel = static_cast<uint64_t>(film_.cropY() + y) * film_.sensorWidth() + film_.cropX() + x;
         const uint64_t sampleSeed = hashMix(run_.seed, sensorPixel, kSaltFinalSample + si);
-        s.prim[i] = run_.primaries.of(filmPos[k], y * W + x, sampleSeed, rays[k], hits[k]);
+        new (&s.prim[i]) Primary(run_.primaries.of(filmPos[k], y * W + x, sampleSeed, rays[k], hits[k]));
         ShadePoint& sp = s.prim[i].sp;
         if (!sp.active || !withinMaxDepth(maxDepth, 2)) continue;
-        BsdfPtr& pointBsdf = batch.holders.emplace_back();  // a spatially varying BSDF at this point (Bsdf::at)
+        // A spatially varying BSDF made at this point (Bsdf::at) is kept alive by the batch; most
+        // points make none and add nothing to it.
+        BsdfPtr pointBsdf;
         const Bsdf& bsdf = bsdfAt(*run_.ctx.scene.bsdfs[sp.hit.bsdf], sp, pointBsdf);
+        if (pointBsdf) batch.holders.push_back(std::move(pointBsdf));
         sp.lightSamples = params.lightSamples;
         // Importance-sampled points: the continuation's ray doubles as the BSDF sample
         // (lightStrategyMis); the others take directLightCheapest's estimator.

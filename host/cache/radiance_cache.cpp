@@ -11,6 +11,35 @@
 
 namespace rc {
 
+namespace {
+
+// The record ids one query has met already (querySphere reports a record once per cell it lives
+// in): one stamp per record, kept per thread across queries, so a query only advances the
+// generation instead of clearing anything.
+class VisitedRecords {
+ public:
+  // Starts a query over ids < count.
+  void begin(size_t count) {
+    if (stamp_.size() < count) stamp_.resize(count, 0u);
+    if (++generation_ == 0u) {  // wrapped: stamps of 2³² queries ago would read as this one's
+      std::fill(stamp_.begin(), stamp_.end(), 0u);
+      generation_ = 1u;
+    }
+  }
+  // true the first time this query meets `id`.
+  bool first(uint32_t id) {
+    if (stamp_[id] == generation_) return false;
+    stamp_[id] = generation_;
+    return true;
+  }
+
+ private:
+  std::vector<uint32_t> stamp_;
+  uint32_t generation_ = 0u;
+};
+
+}  // namespace
+
 RadianceCache::RadianceCache(int order, const Vec3& lo, const Vec3& hi) : order_(order), octree_(lo, hi) {}
 
 size_t RadianceCache::size() const {
@@ -125,11 +154,14 @@ void RadianceCache::lookupLocked(const Vec3& p, const Vec3& n, Lookup& out, bool
   }
   if (scale > 1.0f) {
     // A record whose scaled sphere holds p has its own box within (scale − 1)·a_i·R_i of p.
-    std::vector<uint32_t> ids;
-    octree_.querySphere(p, (scale - 1.0f) * maxReach_, [&](uint32_t id) { ids.push_back(id); });
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    for (uint32_t id : ids) test(id);
+    // Each candidate is tested once (the entries are sorted below, so the order of the tests
+    // does not matter): the relaxed lookups of a final pass otherwise collected, sorted and
+    // de-duplicated a fresh candidate list each.
+    thread_local VisitedRecords visited;
+    visited.begin(infos_.size());
+    octree_.querySphere(p, (scale - 1.0f) * maxReach_, [&](uint32_t id) {
+      if (visited.first(id)) test(id);
+    });
   } else {
     octree_.query(p, test);
   }

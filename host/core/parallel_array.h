@@ -47,6 +47,11 @@ class ParallelArray {
   ParallelArray() = default;
   // n default-constructed elements.
   explicit ParallelArray(size_t n) : ParallelArray(n, [](size_t) { return T(); }) {}
+  // n elements left unconstructed, for a caller that constructs every one in place (placement
+  // new from its own parallel loop) before any is read: neither a default-construction pass
+  // over the whole array nor a copy of each element into it.
+  struct Unconstructed {};
+  ParallelArray(size_t n, Unconstructed) : data_(allocate(n)), size_(n) {}
   // Element i = make(i).
   template <class Make>
   ParallelArray(size_t n, Make&& make) : data_(allocate(n)), size_(n) {

@@ -33,7 +33,7 @@ std::optional<UnshadowedLight> lightSampleUnshadowed(const RenderContext& ctx, c
   // point on the light first, so that it gets a low-discrepancy pair of its own.
   const Vec2 u = rng.next2D();
   const float uLight = rng.nextFloat();
-  if (ctx.lights.empty() || !hasSmoothLobe(bsdf)) return std::nullopt;
+  if (!ctx.lights.emitsLight() || !hasSmoothLobe(bsdf)) return std::nullopt;
   const std::optional<LightSample> ls = ctx.lights.sample(hit.p, u, uLight);
   if (!ls || !(ls->pdf > 0.0f || ls->delta)) return std::nullopt;
   const Vec3 wiLocal = frame.toLocal(ls->wi);

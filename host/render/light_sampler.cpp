@@ -45,6 +45,7 @@ struct LightSampler::Impl {
   Distribution1D select;
   std::vector<int> meshEntry, sphereEntry;  // shape → entry (area emitters), −1
   std::vector<int> infinite;                // entries of constant/envmap emitters
+  bool emits = false;                       // some entry's power is positive (emitsLight)
 
   Impl(const Scene& s, const std::vector<Emitter>& em) : scene(s), emitters(em) {}
 
@@ -178,6 +179,7 @@ LightSampler::LightSampler(const Scene& scene, const std::vector<Emitter>& emitt
     }  // area emitters are handled with their shapes
   }
   if (!im.entries.empty()) im.select = Distribution1D(power);
+  im.emits = std::any_of(power.begin(), power.end(), [](double p) { return p > 0.0; });
 }
 
 LightSampler::~LightSampler() = default;
@@ -202,6 +204,7 @@ float LightSampler::solidAngleBound(const Vec3& p) const {
 
 const std::vector<Emitter>& LightSampler::emitters() const { return impl_->emitters; }
 bool LightSampler::empty() const { return impl_->entries.empty(); }
+bool LightSampler::emitsLight() const { return impl_->emits; }
 size_t LightSampler::emitterCount() const { return impl_->entries.size(); }
 bool LightSampler::hasEnvironment() const { return !impl_->infinite.empty(); }
 

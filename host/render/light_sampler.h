@@ -71,6 +71,10 @@ class LightSampler {
   // The emitters this sampler samples (the scene's, or the replacement it was built with).
   const std::vector<Emitter>& emitters() const;
   bool empty() const;
+  // Whether any emitter sends light (positive power): false without emitters and where every
+  // emitter is black, e.g. rcache's residual lights once the records carry the whole
+  // environment (cache/light_split.h). Every light sample then carries nothing.
+  bool emitsLight() const;
   size_t emitterCount() const;
 
  private:

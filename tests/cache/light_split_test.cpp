@@ -66,6 +66,27 @@ TEST(LightSplit, PartsAddUpToTheEnvmapInEveryDirection) {
   EXPECT_EQ(split.residualLights().environmentPdf(Vec3(0, 1, 0)), 0.0f);
 }
 
+// A sky the records carry whole leaves black residual lights, which the direct-light estimators
+// skip (LightSampler::emitsLight); a sun left to light sampling keeps them lit.
+TEST(LightSplit, SkyCachedWholeLeavesBlackResidualLights) {
+  Scene constant;
+  Emitter c;
+  c.type = EmitterType::Constant;
+  c.radiance = Color(0.2f, 0.3f, 0.4f);
+  constant.emitters.push_back(c);
+  EXPECT_TRUE(LightSampler(constant).emitsLight());
+  const LightSplit constantSplit(constant, true, 1.0f / 3.0f);
+  ASSERT_TRUE(constantSplit.active());
+  EXPECT_FALSE(constantSplit.residualLights().emitsLight());
+  Scene sky;
+  sky.emitters.push_back(skyEmitter(0.0f));  // no sun: passes the variance bound whole
+  EXPECT_FALSE(LightSplit(sky, true, 1.0f / 3.0f).residualLights().emitsLight());
+  Scene sun;
+  sun.emitters.push_back(skyEmitter(5000.0f));
+  EXPECT_TRUE(LightSplit(sun, true, 1.0f / 3.0f).residualLights().emitsLight());
+  EXPECT_FALSE(LightSampler(Scene{}).emitsLight());
+}
+
 TEST(LightSplit, DisabledWithoutEnvironmentOrWhenOff) {
   const Scene box = test::boxScene(0.3f);
   EXPECT_FALSE(LightSplit(box, true, 1.0f / 3.0f).active());

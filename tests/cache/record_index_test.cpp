@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include "cache/radiance_cache.h"
 #include "cache/record_octree.h"
@@ -144,6 +145,44 @@ TEST(RecordOctree, EqualsBruteForceOnRandomRecords) {
   }
   EXPECT_GT(total, 2000u);  // the test exercises real overlaps, not empty lookups
   EXPECT_GT(totalRelaxed, total);  // relaxed lookups reach more records
+}
+
+// Relaxed lookups keep, per thread, which records a query has met (RadianceCache's
+// VisitedRecords, shared by every cache the thread looks up): queries alternating between two
+// caches whose record ids overlap must each still find exactly brute force's records, once each.
+TEST(RecordOctree, RelaxedLookupsAlternatingBetweenCachesEqualBruteForce) {
+  Rng rng(11);
+  auto randomCache = [&](int records) {
+    auto cache = std::make_unique<RadianceCache>(1, Vec3(0.0f), Vec3(1.0f));
+    std::vector<RecordInfo> infos;
+    for (int i = 0; i < records; ++i) {
+      RecordInfo r;
+      r.p = Vec3(rng.nextFloat(), rng.nextFloat(), rng.nextFloat() * 0.1f);
+      r.frame = Frame::fromNormal(glm::normalize(Vec3(rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f, 1.0f)));
+      r.R = 0.02f + 0.1f * rng.nextFloat();
+      r.a = 0.5f + rng.nextFloat();
+      infos.push_back(r);
+    }
+    const std::vector<float> z(3 * infos.size(), 0.0f), none;
+    cache->insert(infos, z, z, z, none, none, none);
+    return cache;
+  };
+  const auto small = randomCache(150), large = randomCache(600);
+  size_t found = 0;
+  for (int q = 0; q < 1000; ++q) {
+    const RadianceCache& cache = q % 3 == 0 ? *small : *large;
+    const Vec3 p(rng.nextFloat(), rng.nextFloat(), rng.nextFloat() * 0.1f);
+    const Vec3 n = glm::normalize(Vec3(rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f, 1.0f));
+    Lookup a, b;
+    cache.lookup(p, n, a, 2.0f);
+    cache.lookupBruteForce(p, n, b, 2.0f);
+    ASSERT_EQ(a.entries.size(), b.entries.size()) << "query " << q;
+    for (size_t i = 0; i < a.entries.size(); ++i) EXPECT_EQ(a.entries[i].record, b.entries[i].record);
+    EXPECT_EQ(a.weightSum, b.weightSum);
+    EXPECT_EQ(a.sameNormal, b.sameNormal);
+    found += a.entries.size();
+  }
+  EXPECT_GT(found, 1000u);  // real overlaps, not empty lookups
 }
 
 // Neighbour clamping of batches (RadianceCache::insert finds candidates among the existing records
