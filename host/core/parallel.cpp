@@ -25,18 +25,21 @@ thread_local bool tInsideLoop = false;
 thread_local LoopAccount tLoopAccount;
 thread_local bool tTimingLoop = false;
 
-// How long a thread that has run out of work keeps polling for more before it sleeps: a worker
-// after its loop (the render's next loop usually starts after a few microseconds of serial code),
-// the loop's caller for workers still in a chunk. Sleeping at once costs a scheduler wake-up on the
-// other side — on a virtual machine tens of microseconds, longer than many loops — and leaves
-// the caller alone while the worker wakes. Bounded, and yielding while it polls, so a thread that
-// needs the core (PoCL's kernel threads, other processes) gets it.
-constexpr auto kPollBeforeSleep = std::chrono::microseconds(200);
+// How long a thread that has run out of work keeps polling for more before it sleeps. Sleeping
+// at once costs a scheduler wake-up on the other side — on a virtual machine tens of
+// microseconds, longer than many loops — during which one thread works alone. A worker after its
+// loop polls for the next one (the render's next loop usually starts after a few microseconds of
+// serial code; a longer gap is a kernel call, whose threads need the core: the poll yields, and
+// ends). The loop's caller polls for the workers still in a chunk: they finish within a chunk's
+// time, and the core has nothing else of the render to run meanwhile.
+constexpr auto kWorkerPoll = std::chrono::microseconds(1000);
+constexpr auto kCallerPoll = std::chrono::microseconds(5000);
 
-// Polls ready() until it holds or kPollBeforeSleep has passed; returns the last ready().
+// Polls ready() until it holds or `bound` has passed, yielding the core every few dozen tries;
+// returns the last ready().
 template <class Ready>
-bool pollFor(Ready&& ready) {
-  const auto until = std::chrono::steady_clock::now() + kPollBeforeSleep;
+bool pollFor(std::chrono::microseconds bound, Ready&& ready) {
+  const auto until = std::chrono::steady_clock::now() + bound;
   for (int spin = 0;; ++spin) {
     if (ready()) return true;
     if ((spin & 63) == 63) {
@@ -67,7 +70,7 @@ class WorkerPool {
   // that joined have returned. `work` must return only when the loop has no chunk left to hand
   // out: then the job is withdrawn, so the caller waits for the workers still running a chunk but
   // never for a worker that has yet to wake. Workers poll for the next job a while before they
-  // sleep, and the caller polls for the last chunks before it sleeps (kPollBeforeSleep). A second
+  // sleep, and the caller polls for the last chunks before it sleeps (kWorkerPoll, kCallerPoll). A second
   // caller while the pool is busy (two loops started from different threads) runs its work alone
   // on its own thread.
   void run(const std::function<void()>& work) {
@@ -87,7 +90,7 @@ class WorkerPool {
       std::lock_guard<std::mutex> lock(mutex_);
       job_ = nullptr;
     }
-    if (pollFor([this] { return running_.load(std::memory_order_acquire) == 0; })) return;
+    if (pollFor(kCallerPoll, [this] { return running_.load(std::memory_order_acquire) == 0; })) return;
     std::unique_lock<std::mutex> lock(mutex_);
     done_.wait(lock, [this] { return running_.load(std::memory_order_acquire) == 0; });
   }
@@ -97,7 +100,9 @@ class WorkerPool {
     uint64_t seen = 0;
     for (;;) {
       const std::function<void()>* job = nullptr;
-      pollFor([&] { return stop_.load(std::memory_order_acquire) || generation_.load(std::memory_order_acquire) != seen; });
+      pollFor(kWorkerPoll, [&] {
+        return stop_.load(std::memory_order_acquire) || generation_.load(std::memory_order_acquire) != seen;
+      });
       {
         std::unique_lock<std::mutex> lock(mutex_);
         wake_.wait(lock, [&] { return stop_.load() || generation_.load() != seen; });
