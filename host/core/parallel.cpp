@@ -1,5 +1,6 @@
 #include "core/parallel.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -155,10 +156,38 @@ int threadCount() {
 
 LoopAccount loopAccountOfThisThread() { return tLoopAccount; }
 
+namespace {
+
+// The chunks of a loop: full chunks, then its last two chunks' worth in quarters, so the threads
+// finish close together — a thread that takes the last full chunk while the others have none left
+// keeps them waiting for up to a chunk's time. Fixed by n and the chunk alone, so which items a body
+// call gets does not depend on the thread count. Loops of fewer than two chunks are left whole.
+class ChunkPlan {
+ public:
+  ChunkPlan(size_t n, size_t chunk) : n_(n), chunk_(chunk) {
+    const bool split = chunk >= 4 && n >= 2 * chunk;
+    head_ = split ? n - 2 * chunk : n;
+    headChunks_ = (head_ + chunk - 1) / chunk;
+    tail_ = split ? chunk / 4 : chunk;
+    count_ = headChunks_ + (n - head_ + tail_ - 1) / tail_;
+  }
+  size_t count() const { return count_; }
+  size_t begin(size_t c) const { return c < headChunks_ ? c * chunk_ : head_ + (c - headChunks_) * tail_; }
+  size_t end(size_t c) const {
+    return c < headChunks_ ? std::min(head_, (c + 1) * chunk_) : std::min(n_, head_ + (c - headChunks_ + 1) * tail_);
+  }
+
+ private:
+  size_t n_, chunk_, head_, headChunks_, tail_, count_;
+};
+
+}  // namespace
+
 void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t)>& body) {
   if (n == 0) return;
   if (chunk == 0) chunk = 1;
-  const size_t chunks = (n + chunk - 1) / chunk;
+  const ChunkPlan plan(n, chunk);
+  const size_t chunks = plan.count();
   const int threads = threadCount();
   std::atomic<size_t> next{0};
   std::exception_ptr failure;
@@ -168,7 +197,7 @@ void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t
       const size_t c = next.fetch_add(1);
       if (c >= chunks) return;
       try {
-        body(c * chunk, std::min(n, (c + 1) * chunk));
+        body(plan.begin(c), plan.end(c));
       } catch (...) {
         std::lock_guard<std::mutex> lock(failureMutex);
         if (!failure) failure = std::current_exception();
