@@ -71,9 +71,9 @@ class WorkerPool {
   // that joined have returned. `work` must return only when the loop has no chunk left to hand
   // out: then the job is withdrawn, so the caller waits for the workers still running a chunk but
   // never for a worker that has yet to wake. Workers poll for the next job a while before they
-  // sleep, and the caller polls for the last chunks before it sleeps (kWorkerPoll, kCallerPoll). A second
-  // caller while the pool is busy (two loops started from different threads) runs its work alone
-  // on its own thread.
+  // sleep, and the caller polls for the last chunks before it sleeps (kWorkerPoll, kCallerPoll).
+  // A second caller while the pool is busy (two loops started from different threads) runs its
+  // work alone on its own thread.
   void run(const std::function<void()>& work) {
     std::unique_lock<std::mutex> owner(runMutex_, std::try_to_lock);
     if (!owner.owns_lock()) {
