@@ -8,14 +8,15 @@ thread C, the pool's workers W, PoCL's kernel threads P) and whether other proce
 Reported per phase:
   - the phase's wall time split by how many of the render's threads ran: 0 (all waiting), 1 (C
     alone, W alone, P alone), 2 or more; "(preempted)" where one of its threads was runnable but
-    off a CPU (load from other processes, not the render's own waiting);
+    off a CPU (load from other processes, not the render's own waiting; a polling worker's yield
+    to another process counts too);
   - where the time with one thread running and the others waiting goes: the clock samples taken
-    while their thread was the only one on a CPU and none was preempted, by call site (the innermost rcache function that is not the
-    pool's own machinery, ← its caller, · the leaf when it is a library or kernel function). A site
-    on C is serial work; on W or P it is the last chunk of a loop or a kernel's last work-groups,
-    while C waits;
-  - the control thread's sleeps by call site (where it blocked: a loop's end, a kernel call, a
-    lock): count, total time, and how much of it no thread of the render ran (pure wake-up cost, or CPUs taken by others).
+    while their thread was the only one on a CPU and none was preempted, by call site (the innermost
+    rcache function that is not the pool's own machinery, ← its caller, · the leaf when it is a
+    library or kernel function). A site on C is serial work; on W or P it is the last chunk of a
+    loop or a kernel's last work-groups, while C waits.
+A polling pool worker counts as on a CPU. Where the control thread sleeps is better read from its
+own switches: perf record -e sched:sched_switch -c 1 --call-graph dwarf,16384 of the render alone.
 Times are exact for the split (switch timestamps) and sampled (1 ms each) for the sites.
 
 Phases are told apart by the control thread's stacks: the fill from its first to last sample under
@@ -130,8 +131,8 @@ def main():
     # Running set over time (sweep of the CPU changes): times, per time the render's running tids,
     # whether one of its threads was preempted (runnable, off a CPU: load, not the render's own
     # waiting), and how many CPUs ran other processes.
-    switches = sorted((e[0], e[1], SWITCH.search(e[5])) for e in events if e[4] == "sched:sched_switch")
-    changes = [(t, cpu, int(m.group(3))) for t, cpu, m in switches]
+    switches = sorted(((e[0], e[1], SWITCH.search(e[5])) for e in events if e[4] == "sched:sched_switch"),
+                      key=lambda x: (x[0], x[1]))
     on_cpu, preempted, times, running, others, held = {}, set(), [], [], [], []
     for t, cpu, m in switches:
         prev, state, nxt = int(m.group(1)), m.group(2), int(m.group(3))
@@ -181,30 +182,6 @@ def main():
             print("### %s, the others waiting: %d samples (≈ %.3f s)" % (label, total, total / 1000))
             for s, c in alone[k].most_common(args.top):
                 print("  %5d  %s" % (c, s))
-        # The control thread's sleeps: from its switch-out (state S/D) to its next switch-in.
-        sleeps = collections.defaultdict(lambda: [0, 0.0, 0.0])
-        outs = [e for e in events if e[4] == "sched:sched_switch" and e[3] == control and lo <= e[0] <= hi]
-        ins = sorted(t for t, _, tid in changes if tid == control)
-        for e in outs:
-            m = SWITCH.search(e[5])
-            if m.group(2) == "R":
-                continue  # preempted, not waiting
-            j = bisect.bisect_right(ins, e[0])
-            if j >= len(ins):
-                continue
-            back = ins[j]
-            s = sleeps[site(e[6])]
-            s[0] += 1
-            s[1] += back - e[0]
-            k = max(0, bisect.bisect_right(times, e[0]) - 1)
-            while k < len(times) and times[k] < back:
-                if not running[k]:
-                    s[2] += min(back, times[k + 1] if k + 1 < len(times) else back) - max(e[0], times[k])
-                k += 1
-        total = [sum(v[i] for v in sleeps.values()) for i in range(3)]
-        print("### control thread sleeps: %d, %.3f s, of which no render thread ran %.3f s" % tuple(total))
-        for s, v in sorted(sleeps.items(), key=lambda kv: -kv[1][1])[:args.top]:
-            print("  %5d  %.3f s  %.3f s idle  %s" % (v[0], v[1], v[2], s))
 
 
 if __name__ == "__main__":
