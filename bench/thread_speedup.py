@@ -19,6 +19,7 @@ chunks of unequal cost. Median of --reps runs; only for --threads 2.
 
 Usage (repository root, after scripts/build.sh):
   python3 bench/thread_speedup.py [--threads 2] [--res 256] [--spp 16] [--reps 3] [--scenes cornell_glossy]
+                                  [--integrators path rcache]
 Prints a Markdown table.
 """
 import argparse
@@ -86,6 +87,8 @@ def main():
     ap.add_argument("--spp", type=int, default=16)
     ap.add_argument("--reps", type=int, default=3)
     ap.add_argument("--scenes", nargs="*", default=["cornell_glossy"])
+    ap.add_argument("--integrators", nargs="*", default=list(PHASES), choices=list(PHASES),
+                    help="which integrators' phases to time (default both)")
     ap.add_argument("--estimate", action="store_true", help="CPU split at 1 thread instead of timing (see above)")
     args = ap.parse_args()
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -100,6 +103,8 @@ def main():
         for scene in args.scenes:
             path = os.path.join(root, "scenes", scene + ".xml")
             for integrator, keys in PHASES.items():
+                if integrator not in args.integrators:
+                    continue
                 for t in (1, args.threads):
                     s, b = run(args.rcache, path, integrator, t, args.res, args.spp, work)
                     for k in keys:
@@ -114,6 +119,8 @@ def main():
     print("|---|---|---|---|---|---|")
     for scene in args.scenes:
         for integrator, keys in PHASES.items():
+            if integrator not in args.integrators:
+                continue
             for k in keys:
                 if (scene, k, 1) not in best or (scene, k, n) not in best:
                     print("| %s | %s | — | — | not run (%s) | |" % (scene, k, "the pilot path-traced the scene"))

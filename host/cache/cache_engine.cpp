@@ -6,6 +6,7 @@
 #include "bsdf/alpha_family.h"
 #include "cache/cosine_match.h"
 #include "cache/direct_light_batch.h"
+#include "cache/interpolate_entries.h"
 #include "cache/radius_floor.h"
 #include "cache/record_octree.h"
 #include "cache/rng_salts.h"
@@ -36,12 +37,6 @@ constexpr int kHardDepthLimit = 1000;
 constexpr uint32_t kRecordLowDiscrepancyFirstDim = 2;
 // Adaptive-caching checks per ensureCoverage call: each may shrink records and uncover points.
 constexpr int kMaxAdaptiveRounds = 4;
-
-void frameRows(const Frame& f, float* out) {
-  const Vec3 rows[3] = {f.t, f.b, f.n};
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) out[3 * r + c] = rows[r][c];
-}
 
 // The points of each cache key (tech[i] cached), in point order per key: one order-preserving
 // parallel selection per distinct key (a handful per call).
@@ -676,31 +671,16 @@ void CacheEngine::interpolateWithKernels(const CacheKey& key, PointView pts,
   RadianceCache& cache = cacheFor(key);
   out.assign(pts.size(), Color(0.0f));
   const size_t K = static_cast<size_t>(cache.coeffsPerRecord());
-  std::vector<int> remap(cache.size(), -1);
+  RecordSlots slots(cache.size());
   // Interpolates the points idx (all in one frame mode) into lambda[(slot)·K...] at their
   // position in the chunk.
   auto interpolate = [&](size_t begin, const std::vector<uint32_t>& idx, bool world, std::vector<float>& lambda) {
     if (idx.empty()) return;
     InterpolateBatch interp = interpolateBatch(key.order, world, idx.size());
-    std::vector<uint32_t> used;
-    for (size_t j = 0; j < idx.size(); ++j) {
-      const Lookup& lk = lookups[begin + idx[j]];
-      frameRows(pts[begin + idx[j]].frame, &interp.pointFrames[9 * j]);
-      for (RcContribution c : lk.entries) {
-        int& slot = remap[static_cast<size_t>(c.record)];
-        if (slot < 0) {
-          slot = static_cast<int>(used.size());
-          used.push_back(static_cast<uint32_t>(c.record));
-        }
-        c.record = slot;
-        interp.entries.push_back(c);
-      }
-      interp.offsets[j + 1] = static_cast<int32_t>(interp.entries.size());
-      stats_.lookups += 1;
-      stats_.contributions += lk.entries.size();
-    }
+    const std::vector<uint32_t> used = fillInterpolateEntries(pts, lookups, begin, idx, slots, interp);
+    stats_.lookups += idx.size();
+    stats_.contributions += interp.entries.size();
     addRecords(cache, used, interp);
-    for (uint32_t r : used) remap[r] = -1;
     std::vector<float> part;
     const auto t0 = SteadyClock::now();
     backend_.interpolate(interp, part);
@@ -832,7 +812,7 @@ void CacheEngine::addRecords(const RadianceCache& cache, const std::vector<uint3
     for (size_t r = b; r < e; ++r) {
       reader.copyCoefficients(ids[r], world, &interp.lambda[K * r], interp.gradients ? &interp.gradT[K * r] : nullptr,
                               interp.gradients ? &interp.gradB[K * r] : nullptr);
-      if (!world) frameRows(reader.info(ids[r]).frame, &interp.recordFrames[9 * r]);
+      if (!world) reader.info(ids[r]).frame.rows(&interp.recordFrames[9 * r]);
     }
   });
 }
@@ -852,7 +832,7 @@ std::vector<Color> CacheEngine::recordPredictions(const CacheKey& key, PointView
     for (size_t j = 0; j < count; ++j) {
       RcContribution c = pairEntry[begin + j];
       ids[j] = static_cast<uint32_t>(c.record);
-      frameRows(pts[pairPoint[begin + j]].frame, &interp.pointFrames[9 * j]);
+      pts[pairPoint[begin + j]].frame.rows(&interp.pointFrames[9 * j]);
       c.record = static_cast<int>(j);
       c.weight = 1.0f;
       interp.entries.push_back(c);

@@ -15,8 +15,11 @@ namespace rc {
 namespace {
 
 constexpr int kFillStrides[] = {16, 8, 4, 2, 1};
-// Points per engine call: bounds memory and gives progress/cancel points.
-constexpr size_t kPointsPerCall = 8192;
+// Points per engine call: bounds memory (≈ 0.3 KB a point) and gives progress/cancel points. Each
+// call ends in rounds that place a few records at the last uncovered points, at a fixed cost per
+// round (two dozen parallel loops and a handful of kernel calls) that a round of one record cannot
+// spread over the threads: fewer, bigger calls have fewer such rounds.
+constexpr size_t kPointsPerCall = 32768;
 
 // The film positions one pass looks up, with their pixels and shade-point seeds.
 struct PassPoints {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 #include "cache/record_weights.h"
 #include "core/error.h"
@@ -108,20 +109,33 @@ uint32_t RadianceCache::insert(std::vector<RecordInfo> infos, const std::vector<
         if (shrunk) shrunk->push_back(id);
       }
     }
-    const uint32_t id = static_cast<uint32_t>(infos_.size());
     infos_.push_back(r);
     spheres_.push_back(influenceSphere(r));
     if (std::isfinite(r.a * r.R)) maxReach_ = std::max(maxReach_, r.a * r.R);
-    octree_.insert(id, r.p, r.a * r.R);
   }
-  lambda_.insert(lambda_.end(), lambda.begin(), lambda.end());
-  gradT_.insert(gradT_.end(), gradT.begin(), gradT.end());
-  gradB_.insert(gradB_.end(), gradB.begin(), gradB.end());
-  if (world) {
-    lambdaW_.insert(lambdaW_.end(), lambdaWorld.begin(), lambdaWorld.end());
-    gradTW_.insert(gradTW_.end(), gradTWorld.begin(), gradTWorld.end());
-    gradBW_.insert(gradBW_.end(), gradBWorld.begin(), gradBWorld.end());
-  }
+  // The octree cells of the new records and the coefficient arrays are independent of each other:
+  // filled side by side instead of one after the other on the calling thread. The cells hold each
+  // record's sphere after the whole batch's clamping (a later record of the batch can shrink an
+  // earlier one); lookups test the exact weight and sort by record, so the cells only need to
+  // contain the spheres.
+  const std::pair<std::vector<float>*, const std::vector<float>*> appends[] = {
+      {&lambda_, &lambda}, {&gradT_, &gradT}, {&gradB_, &gradB},
+      {&lambdaW_, &lambdaWorld}, {&gradTW_, &gradTWorld}, {&gradBW_, &gradBWorld}};
+  const size_t tasks = 1 + (world ? 6 : 3);
+  parallelFor(tasks, 1, [&](size_t b, size_t e) {
+    for (size_t t = b; t < e; ++t) {
+      if (t == 0) {
+        for (size_t i = 0; i < n; ++i) {
+          const RecordInfo& r = infos_[first + i];
+          octree_.insert(first + static_cast<uint32_t>(i), r.p, r.a * r.R);
+        }
+        continue;
+      }
+      std::vector<float>& to = *appends[t - 1].first;
+      const std::vector<float>& from = *appends[t - 1].second;
+      to.insert(to.end(), from.begin(), from.end());
+    }
+  });
   return first;
 }
 

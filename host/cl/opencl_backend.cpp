@@ -135,33 +135,15 @@ class OpenClBackend::Call {
     template <class T>
     Read(const cl::Buffer& b, T* d, size_t count) : buffer(&b), dst(d), bytes(count * sizeof(T)) {}
   };
-  // Brings several outputs back with one wait for the device (and one for the unmaps), not one per
-  // buffer: each wait is a sleep of the calling thread and a wake-up of the device's threads.
+  // Brings several outputs back with one wait for the device, not one per buffer: each wait is a
+  // sleep of the calling thread and a wake-up of the device's threads. Zero-copy outputs wrap the
+  // host arrays themselves (CL_MEM_USE_HOST_PTR); a read into the wrapped array is the standard's
+  // way to make the device's writes visible there (allowed once the commands using the buffer are
+  // done, which the in-order queue guarantees) and needs one wait, where map and unmap need two.
   void readBack(std::initializer_list<Read> reads) const {
-    if (!zeroCopy_) {
-      for (const Read& r : reads)
-        if (r.bytes)
-          RC_CL_CHECK(clEnqueueReadBuffer(queue, r.buffer->get(), CL_FALSE, 0, r.bytes, r.dst, 0, nullptr, nullptr));
-      RC_CL_CHECK(clFinish(queue));
-      return;
-    }
-    // map/unmap makes the device's writes visible in the wrapped host arrays
-    std::vector<void*> mapped;
-    for (const Read& r : reads) {
-      if (!r.bytes) continue;
-      cl_int err = CL_SUCCESS;
-      mapped.push_back(clEnqueueMapBuffer(queue, r.buffer->get(), CL_FALSE, CL_MAP_READ, 0, r.bytes, 0, nullptr, nullptr,
-                                          &err));
-      RC_CL_CHECK_ERR(err, "clEnqueueMapBuffer(queue, buffer, CL_FALSE, CL_MAP_READ, ...)");
-    }
-    RC_CL_CHECK(clFinish(queue));
-    size_t m = 0;
-    for (const Read& r : reads) {
-      if (!r.bytes) continue;
-      void* p = mapped[m++];
-      if (p != r.dst) std::memcpy(r.dst, p, r.bytes);
-      RC_CL_CHECK(clEnqueueUnmapMemObject(queue, r.buffer->get(), p, 0, nullptr, nullptr));
-    }
+    for (const Read& r : reads)
+      if (r.bytes)
+        RC_CL_CHECK(clEnqueueReadBuffer(queue, r.buffer->get(), CL_FALSE, 0, r.bytes, r.dst, 0, nullptr, nullptr));
     RC_CL_CHECK(clFinish(queue));
   }
 
@@ -292,8 +274,9 @@ void OpenClBackend::ensureBasis(Call& call, const ProjectBatch& b) {
   cl::Buffer pattern = call.input(b.pattern.data(), b.pattern.size());
   st.Y = call.scratch(S * np * sizeof(float));
   st.basis.args(static_cast<cl_int>(S), static_cast<cl_int>(b.M), static_cast<cl_int>(b.N), pattern, st.Y);
+  // No wait: the queue is in order, so the projection's kernels run after this one, and the
+  // chunk's read-back waits for all of them.
   call.launch(st.basis, S);
-  RC_CL_CHECK(clFinish(call.queue));
   const std::vector<float> geo = gradientGeometry(b.M, b.N);
   st.gradGeometry = cl::Buffer(call.context, CL_MEM_READ_ONLY, geo.size() * sizeof(float), geo.data());
   st.basisM = b.M;

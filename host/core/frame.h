@@ -33,6 +33,13 @@ struct Frame {
 
   Vec3 toLocal(const Vec3& v) const { return Vec3(glm::dot(v, t), glm::dot(v, b), glm::dot(v, n)); }
   Vec3 toWorld(const Vec3& v) const { return t * v.x + b * v.y + n * v.z; }
+
+  // The rows t, b, n of the world-to-local rotation, row-major (the kernels' frame layout).
+  void rows(float* out) const {
+    const Vec3 r[3] = {t, b, n};
+    for (int i = 0; i < 3; ++i)
+      for (int c = 0; c < 3; ++c) out[3 * i + c] = r[i][c];
+  }
 };
 
 }  // namespace rc

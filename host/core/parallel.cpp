@@ -1,6 +1,8 @@
 #include "core/parallel.h"
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <exception>
 #include <memory>
@@ -24,6 +26,30 @@ thread_local bool tInsideLoop = false;
 thread_local LoopAccount tLoopAccount;
 thread_local bool tTimingLoop = false;
 
+// How long a thread that has run out of work keeps polling for more before it sleeps. Sleeping
+// at once costs a scheduler wake-up on the other side — on a virtual machine tens of
+// microseconds, longer than many loops — during which one thread works alone. A worker after its
+// loop polls for the next one (the render's next loop usually starts after a few microseconds of
+// serial code; a longer gap is a kernel call, whose threads need the core: the poll yields, and
+// ends). The loop's caller polls for the workers still in a chunk: they finish within a chunk's
+// time, and the core has nothing else of the render to run meanwhile.
+constexpr auto kWorkerPoll = std::chrono::microseconds(1000);
+constexpr auto kCallerPoll = std::chrono::microseconds(5000);
+
+// Polls ready() until it holds or `bound` has passed, yielding the core every few dozen tries;
+// returns the last ready().
+template <class Ready>
+bool pollFor(std::chrono::microseconds bound, Ready&& ready) {
+  const auto until = std::chrono::steady_clock::now() + bound;
+  for (int spin = 0;; ++spin) {
+    if (ready()) return true;
+    if ((spin & 63) == 63) {
+      if (std::chrono::steady_clock::now() >= until) return ready();
+      std::this_thread::yield();
+    }
+  }
+}
+
 // Persistent workers: a render makes thousands of parallelFor calls (per batch of records, per
 // band), and creating and joining threads for each cost ≈ 5 % of the run time.
 class WorkerPool {
@@ -41,12 +67,13 @@ class WorkerPool {
   }
   int helpers() const { return static_cast<int>(workers_.size()); }
 
-  // Runs `work` on the calling thread and on every worker that wakes in time; returns when all
+  // Runs `work` on the calling thread and on every worker that joins in time; returns when all
   // that joined have returned. `work` must return only when the loop has no chunk left to hand
   // out: then the job is withdrawn, so the caller waits for the workers still running a chunk but
-  // never for a worker that has yet to wake (a scheduler wake-up for nothing, twice per loop: the
-  // worker's, then the caller's). A second caller while the pool is busy (two loops started from
-  // different threads) runs its work alone on its own thread.
+  // never for a worker that has yet to wake. Workers poll for the next job a while before they
+  // sleep, and the caller polls for the last chunks before it sleeps (kWorkerPoll, kCallerPoll).
+  // A second caller while the pool is busy (two loops started from different threads) runs its
+  // work alone on its own thread.
   void run(const std::function<void()>& work) {
     std::unique_lock<std::mutex> owner(runMutex_, std::try_to_lock);
     if (!owner.owns_lock()) {
@@ -56,13 +83,17 @@ class WorkerPool {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       job_ = &work;
-      ++generation_;
+      generation_.fetch_add(1, std::memory_order_release);
     }
     wake_.notify_all();
     work();
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      job_ = nullptr;
+    }
+    if (pollFor(kCallerPoll, [this] { return running_.load(std::memory_order_acquire) == 0; })) return;
     std::unique_lock<std::mutex> lock(mutex_);
-    job_ = nullptr;
-    done_.wait(lock, [this] { return running_ == 0; });
+    done_.wait(lock, [this] { return running_.load(std::memory_order_acquire) == 0; });
   }
 
  private:
@@ -70,29 +101,36 @@ class WorkerPool {
     uint64_t seen = 0;
     for (;;) {
       const std::function<void()>* job = nullptr;
+      pollFor(kWorkerPoll, [&] {
+        return stop_.load(std::memory_order_acquire) || generation_.load(std::memory_order_acquire) != seen;
+      });
       {
         std::unique_lock<std::mutex> lock(mutex_);
-        wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+        wake_.wait(lock, [&] { return stop_.load() || generation_.load() != seen; });
         if (stop_) return;
-        seen = generation_;
+        seen = generation_.load();
         job = job_;
-        if (!job) continue;  // withdrawn: the loop ended before this worker woke
-        ++running_;
+        if (!job) continue;  // withdrawn: the loop ended before this worker joined
+        running_.fetch_add(1, std::memory_order_relaxed);
       }
       (*job)();
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (--running_ == 0) done_.notify_one();
+      if (running_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+        // The caller may be asleep in done_.wait: take the lock so the notification cannot fall
+        // between its test of running_ and its wait.
+        std::lock_guard<std::mutex> lock(mutex_);
+        done_.notify_one();
+      }
     }
   }
 
   std::mutex runMutex_;  // held by the caller whose loop the workers run
-  std::mutex mutex_;
+  std::mutex mutex_;     // guards job_ and the sleeps on wake_ and done_
   std::condition_variable wake_, done_;
   std::vector<std::thread> workers_;
   const std::function<void()>* job_ = nullptr;
-  uint64_t generation_ = 0;
-  int running_ = 0;  // workers inside the current job
-  bool stop_ = false;
+  std::atomic<uint64_t> generation_{0};
+  std::atomic<int> running_{0};  // workers inside the current job
+  std::atomic<bool> stop_{false};
 };
 
 // The pool for the current thread count (rebuilt when setThreadCount changes it). parallelFor is
@@ -118,10 +156,38 @@ int threadCount() {
 
 LoopAccount loopAccountOfThisThread() { return tLoopAccount; }
 
+namespace {
+
+// The chunks of a loop: full chunks, then its last two chunks' worth in quarters, so the threads
+// finish close together — a thread that takes the last full chunk while the others have none left
+// keeps them waiting for up to a chunk's time. Fixed by n and the chunk alone, so which items a body
+// call gets does not depend on the thread count. Loops of fewer than two chunks are left whole.
+class ChunkPlan {
+ public:
+  ChunkPlan(size_t n, size_t chunk) : n_(n), chunk_(chunk) {
+    const bool split = chunk >= 4 && n >= 2 * chunk;
+    head_ = split ? n - 2 * chunk : n;
+    headChunks_ = (head_ + chunk - 1) / chunk;
+    tail_ = split ? chunk / 4 : chunk;
+    count_ = headChunks_ + (n - head_ + tail_ - 1) / tail_;
+  }
+  size_t count() const { return count_; }
+  size_t begin(size_t c) const { return c < headChunks_ ? c * chunk_ : head_ + (c - headChunks_) * tail_; }
+  size_t end(size_t c) const {
+    return c < headChunks_ ? std::min(head_, (c + 1) * chunk_) : std::min(n_, head_ + (c - headChunks_ + 1) * tail_);
+  }
+
+ private:
+  size_t n_, chunk_, head_, headChunks_, tail_, count_;
+};
+
+}  // namespace
+
 void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t)>& body) {
   if (n == 0) return;
   if (chunk == 0) chunk = 1;
-  const size_t chunks = (n + chunk - 1) / chunk;
+  const ChunkPlan plan(n, chunk);
+  const size_t chunks = plan.count();
   const int threads = threadCount();
   std::atomic<size_t> next{0};
   std::exception_ptr failure;
@@ -131,7 +197,7 @@ void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t
       const size_t c = next.fetch_add(1);
       if (c >= chunks) return;
       try {
-        body(c * chunk, std::min(n, (c + 1) * chunk));
+        body(plan.begin(c), plan.end(c));
       } catch (...) {
         std::lock_guard<std::mutex> lock(failureMutex);
         if (!failure) failure = std::current_exception();

@@ -11,7 +11,8 @@ namespace rc {
 void setThreadCount(int threads);
 int threadCount();
 
-// Calls body(begin, end) for chunks of [0, n); blocks until done. Exceptions are rethrown on the
+// Calls body(begin, end) for chunks of [0, n) of at most `chunk` items (the last two chunks' worth
+// in quarters, so threads finish together; the same chunks at any thread count); blocks until done. Exceptions are rethrown on the
 // calling thread (the first one wins).
 void parallelFor(size_t n, size_t chunk, const std::function<void(size_t, size_t)>& body);
 

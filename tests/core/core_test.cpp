@@ -1,10 +1,13 @@
 // Core utilities: error metrics, properties use-tracking, RNG determinism, parallelFor, atomic writes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <mutex>
+#include <utility>
 #include <sys/stat.h>
 
 #include "core/atomic_file.h"
@@ -160,6 +163,40 @@ TEST(Parallel, ShortLoopsCoverEveryIndexOnceWhateverJoins) {
         for (size_t i = b; i < e; ++i) hits[i]++;
       });
       ASSERT_EQ(hits, std::vector<int>(3, 1)) << threads << " threads, loop " << loop;
+    }
+  }
+  setThreadCount(0);
+}
+
+// The chunks a body gets: [0, n) once, none longer than the chunk, the last two chunks' worth in
+// quarters, and the same ranges at any thread count (bodies may batch their range, e.g. as ray
+// packets, so images must not depend on which ranges the thread count made).
+TEST(Parallel, ChunksCoverTheRangeOnceAndDoNotDependOnThreads) {
+  for (size_t n : {1u, 7u, 100u, 1000u, 1025u, 4099u}) {
+    for (size_t chunk : {1u, 3u, 64u, 256u}) {
+      std::vector<std::pair<size_t, size_t>> first;
+      for (int threads : {1, 2, 3}) {
+        setThreadCount(threads);
+        std::mutex m;
+        std::vector<std::pair<size_t, size_t>> ranges;
+        parallelFor(n, chunk, [&](size_t b, size_t e) {
+          std::lock_guard<std::mutex> lock(m);
+          ranges.emplace_back(b, e);
+        });
+        std::sort(ranges.begin(), ranges.end());
+        size_t at = 0;
+        for (const auto& r : ranges) {
+          ASSERT_EQ(r.first, at) << "n " << n << " chunk " << chunk;
+          ASSERT_GT(r.second, r.first);
+          ASSERT_LE(r.second - r.first, chunk);
+          at = r.second;
+        }
+        ASSERT_EQ(at, n);
+        if (chunk >= 4 && n >= 2 * chunk)  // the last of the quarters of the last 2·chunk items
+          EXPECT_EQ(ranges.back().second - ranges.back().first, (2 * chunk - 1) % (chunk / 4) + 1);
+        if (threads == 1) first = ranges;
+        EXPECT_EQ(ranges, first) << threads << " threads";
+      }
     }
   }
   setThreadCount(0);
