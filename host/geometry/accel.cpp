@@ -149,6 +149,7 @@ struct Accel::Impl {
   // sphere's uv costs an atan2 and an acos, so hits on other spheres leave it zero.
   std::vector<uint8_t> sphereUv;
   mutable RayCounter rays;
+  mutable RayCounter occlusionRays;  // the part of `rays` that asked occluded()
 
   std::mutex errorMutex;
   std::string errorMessage;
@@ -259,6 +260,7 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
 Accel::~Accel() = default;
 
 uint64_t Accel::raysTraced() const { return impl_->rays.total(); }
+uint64_t Accel::occlusionRaysTraced() const { return impl_->occlusionRays.total(); }
 
 namespace {
 
@@ -435,6 +437,7 @@ bool Accel::occluded(const Ray& ray) const {
   RTCRay r = toEmbree(ray);
   rtcOccluded1(impl_->scene, &context, &r);
   impl_->rays.add();
+  impl_->occlusionRays.add();
   impl_->check("occluded");
   return r.tfar < 0.0f && std::isinf(r.tfar);
 }
@@ -558,6 +561,7 @@ void Accel::occludedBatch(const Ray* rays, uint8_t* blocked, size_t count, Batch
       break;
   }
   impl_->rays.add(count);
+  impl_->occlusionRays.add(count);
 }
 
 }  // namespace rc

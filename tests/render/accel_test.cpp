@@ -241,5 +241,30 @@ TEST(Accel, RayCountsAreExactUnderThreads) {
   for (const Hit& h : hits) EXPECT_NEAR(h.t, 1.0f, 1e-6f);
 }
 
+// The shadow-ray statistic (occlusionRaysTraced) counts occlusion queries of every form, and only them.
+TEST(Accel, OcclusionRaysAreCountedApartFromClosestHits) {
+  Scene s;
+  s.meshes.push_back(test::quad({-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, 0));
+  const Accel accel(s);
+  std::vector<Ray> rays(21);
+  for (size_t i = 0; i < rays.size(); ++i) {
+    rays[i].o = Vec3(0.1f * i - 1.0f, 0, 1);
+    rays[i].d = Vec3(0, 0, -1);
+  }
+  std::vector<Hit> hits(rays.size());
+  std::vector<uint8_t> blocked(rays.size());
+  accel.intersect(rays[0]);
+  accel.intersect(rays.data(), hits.data(), rays.size(), true);
+  for (BatchQuery q : {BatchQuery::Single, BatchQuery::Stream, BatchQuery::Packet16})
+    accel.intersectBatch(rays.data(), hits.data(), rays.size(), q);
+  EXPECT_EQ(accel.occlusionRaysTraced(), 0u);
+  accel.occluded(rays[0]);
+  EXPECT_EQ(accel.occlusionRaysTraced(), 1u);
+  for (BatchQuery q : {BatchQuery::Single, BatchQuery::Stream, BatchQuery::Packet16})
+    accel.occludedBatch(rays.data(), blocked.data(), rays.size(), q);
+  EXPECT_EQ(accel.occlusionRaysTraced(), 1u + 3u * rays.size());
+  EXPECT_EQ(accel.raysTraced(), 1u + 4u * rays.size() + accel.occlusionRaysTraced());
+}
+
 }  // namespace
 }  // namespace rc
