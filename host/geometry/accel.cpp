@@ -188,8 +188,9 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
   rtcSetDeviceErrorFunction(im.device, &Impl::onError, &im);
 
   im.scene = rtcNewScene(im.device);
-  // Robust mode: watertight triangle tests, no leaks through shared edges.
-  rtcSetSceneFlags(im.scene, RTC_SCENE_FLAG_ROBUST);
+  // Mitsuba's default: Embree's fast mode. Its robust mode (watertight triangle tests, no leaks
+  // through shared edges) only where the scene asks for it (Scene::embreeRobust).
+  rtcSetSceneFlags(im.scene, scene.embreeRobust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
   rtcSetSceneBuildQuality(im.scene, RTC_BUILD_QUALITY_HIGH);
   im.check("building the scene BVH");
 
@@ -263,6 +264,7 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
 Accel::~Accel() = default;
 
 uint64_t Accel::raysTraced() const { return impl_->rays.total(); }
+bool Accel::robustIntersections() const { return (rtcGetSceneFlags(impl_->scene) & RTC_SCENE_FLAG_ROBUST) != 0; }
 uint64_t Accel::occlusionRaysTraced() const { return impl_->occlusionRays.total(); }
 
 namespace {

@@ -71,6 +71,7 @@ class Accel {
   static Ray spawnRayTo(const Hit& hit, const Vec3& target);
 
   const Scene& scene() const { return scene_; }
+  bool robustIntersections() const;  // Embree's robust mode is on (Scene::embreeRobust)
   uint64_t raysTraced() const;           // total rays (intersect + occluded), for statistics
   uint64_t occlusionRaysTraced() const;  // of these, the occlusion (shadow) rays
 
