@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstring>
 #include <mutex>
+#include <new>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -473,7 +474,7 @@ void Accel::intersectStream(const Ray* rays, Hit* hits, size_t count, bool coher
     impl_->check("intersect");
     for (size_t i = 0; i < n; ++i) {
       const RTCHit& h = rh[i].hit;
-      hits[b + i] = hitOf(rays[b + i], h.geomID, h.primID, h.u, h.v, rh[i].ray.tfar);
+      new (&hits[b + i]) Hit(hitOf(rays[b + i], h.geomID, h.primID, h.u, h.v, rh[i].ray.tfar));  // in place: no copy
     }
   }
   impl_->rays.add(count);
@@ -532,8 +533,8 @@ void Accel::intersectBatch(const Ray* rays, Hit* hits, size_t count, BatchQuery 
         rtcIntersect16(p.valid, impl_->scene, &context, &p.rh);
         impl_->check("intersect");
         for (size_t i = 0; i < n; ++i)
-          hits[b + i] = hitOf(rays[b + i], p.rh.hit.geomID[i], p.rh.hit.primID[i], p.rh.hit.u[i], p.rh.hit.v[i],
-                              p.rh.ray.tfar[i]);
+          new (&hits[b + i]) Hit(hitOf(rays[b + i], p.rh.hit.geomID[i], p.rh.hit.primID[i], p.rh.hit.u[i],
+                                       p.rh.hit.v[i], p.rh.ray.tfar[i]));  // in place: no copy
       });
       break;
   }
