@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstring>
 #include <mutex>
+#include <new>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -93,11 +94,14 @@ RTCRay toEmbree(const Ray& r) {
 }
 
 // Per-triangle constants of a mesh, computed once when the BVH is built (they were computed per
-// hit: the cross product, normalisation and tangent solve made triangleHit 13 % of a render).
-struct TriangleConstants {
-  std::vector<Vec3> faceNormal;  // orientedFaceNormal
-  std::vector<Vec3> dpdu, dpdv;  // from the uvs, zero when the mesh has none or the map is degenerate
+// hit: the cross product, normalisation and tangent solve made triangleHit 13 % of a render), side
+// by side so that a hit reads them from one place.
+struct TriangleConstant {
+  Vec3 faceNormal;   // orientedFaceNormal
+  float pointError;  // the hit point's error bound (Hit::pError): from the vertices' magnitudes alone
+  Vec3 dpdu, dpdv;   // from the uvs, zero when the mesh has none or the map is degenerate
 };
+using TriangleConstants = std::vector<TriangleConstant>;
 
 // dp/du and dp/dv of a triangle from its uvs; zero when the mesh has none or the map is degenerate.
 std::pair<Vec3, Vec3> triangleUvPartials(const Mesh& mesh, const glm::uvec3& tri) {
@@ -115,20 +119,27 @@ std::pair<Vec3, Vec3> triangleUvPartials(const Mesh& mesh, const glm::uvec3& tri
   return finite(dpdu) && finite(dpdv) ? std::make_pair(dpdu, dpdv) : none;
 }
 
-// Sets table[id] (a table indexed by Embree geomID, −1 where it does not apply) to index.
-void mapGeometry(std::vector<int>& table, unsigned id, int index) {
-  if (table.size() <= id) table.resize(id + 1, -1);
-  table[id] = index;
+// What an Embree geometry is: which kind of shape, and its index in the scene's list of that kind
+// (meshes, curves, sdfgrids; all spheres share one geometry, all cylinders another). One table
+// lookup per hit picks the Hit's constructor.
+struct GeometryRef {
+  enum Kind : uint8_t { kMesh, kSpheres, kCylinders, kCurve, kSdfGrid } kind = kMesh;
+  int index = -1;
+};
+
+void mapGeometry(std::vector<GeometryRef>& table, unsigned id, GeometryRef::Kind kind, int index) {
+  if (table.size() <= id) table.resize(id + 1);
+  table[id] = GeometryRef{kind, index};
 }
 
 TriangleConstants triangleConstants(const Mesh& mesh) {
-  TriangleConstants c;
-  c.faceNormal.resize(mesh.triangles.size());
-  c.dpdu.resize(mesh.triangles.size());
-  c.dpdv.resize(mesh.triangles.size());
+  TriangleConstants c(mesh.triangles.size());
   for (size_t i = 0; i < mesh.triangles.size(); ++i) {
-    c.faceNormal[i] = orientedFaceNormal(mesh, i);
-    std::tie(c.dpdu[i], c.dpdv[i]) = triangleUvPartials(mesh, mesh.triangles[i]);
+    const glm::uvec3 tri = mesh.triangles[i];
+    c[i].faceNormal = orientedFaceNormal(mesh, i);
+    c[i].pointError = kPointErrorUlps * kFloatEps *
+                      std::max({maxAbs(mesh.positions[tri.x]), maxAbs(mesh.positions[tri.y]), maxAbs(mesh.positions[tri.z])});
+    std::tie(c[i].dpdu, c[i].dpdv) = triangleUvPartials(mesh, tri);
   }
   return c;
 }
@@ -138,17 +149,14 @@ TriangleConstants triangleConstants(const Mesh& mesh) {
 struct Accel::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
-  std::vector<int> geomToMesh;  // Embree geomID → mesh index, −1 for the sphere geometry
-  std::vector<int> geomToCurve;  // Embree geomID → curve index, −1 for other geometry
-  std::vector<int> geomToSdfGrid;  // Embree geomID → sdfgrid index, −1 for other geometry
+  std::vector<GeometryRef> geometries;  // per Embree geomID
   std::vector<TriangleConstants> meshConstants;  // per mesh (empty for meshes not in the BVH)
-  unsigned sphereGeom = RTC_INVALID_GEOMETRY_ID;
-  unsigned cylinderGeom = RTC_INVALID_GEOMETRY_ID;
   SphereData sphereData{};
   // Per sphere: whether its material reads the hit's uv (a textured factor, Bsdf::tint). The
   // sphere's uv costs an atan2 and an acos, so hits on other spheres leave it zero.
   std::vector<uint8_t> sphereUv;
   mutable RayCounter rays;
+  mutable RayCounter occlusionRays;  // the part of `rays` that asked occluded()
 
   std::mutex errorMutex;
   std::string errorMessage;
@@ -181,8 +189,9 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
   rtcSetDeviceErrorFunction(im.device, &Impl::onError, &im);
 
   im.scene = rtcNewScene(im.device);
-  // Robust mode: watertight triangle tests, no leaks through shared edges.
-  rtcSetSceneFlags(im.scene, RTC_SCENE_FLAG_ROBUST);
+  // Mitsuba's default: Embree's fast mode. Its robust mode (watertight triangle tests, no leaks
+  // through shared edges) only where the scene asks for it (Scene::embreeRobust).
+  rtcSetSceneFlags(im.scene, scene.embreeRobust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
   rtcSetSceneBuildQuality(im.scene, RTC_BUILD_QUALITY_HIGH);
   im.check("building the scene BVH");
 
@@ -207,8 +216,7 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
     }
     const unsigned id = commitAndAttach(im.scene, g);
     im.check(("mesh '" + mesh.name + "'").c_str());
-    if (im.geomToMesh.size() <= id) im.geomToMesh.resize(id + 1, -1);
-    im.geomToMesh[id] = static_cast<int>(m);
+    mapGeometry(im.geometries, id, GeometryRef::kMesh, static_cast<int>(m));
     im.meshConstants[m] = triangleConstants(mesh);
   }
 
@@ -227,29 +235,27 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
     rtcSetGeometryBoundsFunction(g, &sphereBounds, nullptr);
     rtcSetGeometryIntersectFunction(g, &sphereIntersect);
     rtcSetGeometryOccludedFunction(g, &sphereOccluded);
-    im.sphereGeom = commitAndAttach(im.scene, g);
+    const unsigned id = commitAndAttach(im.scene, g);
     im.check("spheres");
-    if (im.geomToMesh.size() <= im.sphereGeom) im.geomToMesh.resize(im.sphereGeom + 1, -1);
+    mapGeometry(im.geometries, id, GeometryRef::kSpheres, 0);
   }
 
   if (!scene.cylinders.empty()) {
-    im.cylinderGeom = attachCylinders(im.device, im.scene, scene.cylinders);
+    const unsigned id = attachCylinders(im.device, im.scene, scene.cylinders);
     im.check("cylinders");
-    if (im.geomToMesh.size() <= im.cylinderGeom) im.geomToMesh.resize(im.cylinderGeom + 1, -1);
+    mapGeometry(im.geometries, id, GeometryRef::kCylinders, 0);
   }
 
   for (size_t c = 0; c < scene.curves.size(); ++c) {
     const unsigned id = attachCurve(im.device, im.scene, scene.curves[c]);
     im.check(("curve '" + scene.curves[c].name + "'").c_str());
-    mapGeometry(im.geomToMesh, id, -1);
-    mapGeometry(im.geomToCurve, id, static_cast<int>(c));
+    mapGeometry(im.geometries, id, GeometryRef::kCurve, static_cast<int>(c));
   }
 
   for (size_t g = 0; g < scene.sdfGrids.size(); ++g) {
     const unsigned id = attachSdfGrid(im.device, im.scene, scene.sdfGrids[g]);
     im.check(("sdfgrid '" + scene.sdfGrids[g].name + "'").c_str());
-    mapGeometry(im.geomToMesh, id, -1);
-    mapGeometry(im.geomToSdfGrid, id, static_cast<int>(g));
+    mapGeometry(im.geometries, id, GeometryRef::kSdfGrid, static_cast<int>(g));
   }
 
   rtcCommitScene(im.scene);
@@ -259,10 +265,12 @@ Accel::Accel(const Scene& scene) : scene_(scene), impl_(std::make_unique<Impl>()
 Accel::~Accel() = default;
 
 uint64_t Accel::raysTraced() const { return impl_->rays.total(); }
+bool Accel::robustIntersections() const { return (rtcGetSceneFlags(impl_->scene) & RTC_SCENE_FLAG_ROBUST) != 0; }
+uint64_t Accel::occlusionRaysTraced() const { return impl_->occlusionRays.total(); }
 
 namespace {
 
-Hit triangleHit(const Mesh& mesh, const TriangleConstants& tc, int meshIndex, unsigned prim, float u, float v,
+Hit triangleHit(const Mesh& mesh, const TriangleConstant& tc, int meshIndex, unsigned prim, float u, float v,
                 float t) {
   Hit h;
   h.t = t;
@@ -276,8 +284,8 @@ Hit triangleHit(const Mesh& mesh, const TriangleConstants& tc, int meshIndex, un
   // From barycentrics, not o + t·d: the error is then relative to the triangle's coordinates only.
   h.p = w * p0 + u * p1 + v * p2;
   h.uv.position = h.p;
-  h.pError = kPointErrorUlps * kFloatEps * std::max({maxAbs(p0), maxAbs(p1), maxAbs(p2)});
-  const Vec3 ng = tc.faceNormal[prim];
+  h.pError = tc.pointError;
+  const Vec3 ng = tc.faceNormal;
   if (!mesh.normals.empty()) {
     const Vec3 &n0 = mesh.normals[tri.x], &n1 = mesh.normals[tri.y], &n2 = mesh.normals[tri.z];
     Vec3 ns = w * n0 + u * n1 + v * n2;
@@ -292,8 +300,8 @@ Hit triangleHit(const Mesh& mesh, const TriangleConstants& tc, int meshIndex, un
   if (!mesh.uvs.empty()) {
     const Vec2 &t0 = mesh.uvs[tri.x], &t1 = mesh.uvs[tri.y], &t2 = mesh.uvs[tri.z];
     h.uv = w * t0 + u * t1 + v * t2;
-    h.dpdu = tc.dpdu[prim];
-    h.dpdv = tc.dpdv[prim];
+    h.dpdu = tc.dpdu;
+    h.dpdv = tc.dpdv;
   } else {
     h.uv = Vec2(u, v);
   }
@@ -404,19 +412,22 @@ RTCRayHit emptyRayHit(const Ray& ray) {
 
 Hit Accel::hitOf(const Ray& ray, unsigned geomID, unsigned primID, float u, float v, float tfar) const {
   if (geomID == RTC_INVALID_GEOMETRY_ID) return Hit{};
-  if (geomID == impl_->sphereGeom) {
-    const int s = static_cast<int>(primID);
-    return sphereHit(scene_.spheres[s], s, ray, tfar, impl_->sphereUv[s] != 0);
+  const GeometryRef g = impl_->geometries[geomID];
+  switch (g.kind) {
+    case GeometryRef::kMesh:
+      return triangleHit(scene_.meshes[g.index], impl_->meshConstants[g.index][primID], g.index, primID, u, v, tfar);
+    case GeometryRef::kSpheres: {
+      const int s = static_cast<int>(primID);
+      return sphereHit(scene_.spheres[s], s, ray, tfar, impl_->sphereUv[s] != 0);
+    }
+    case GeometryRef::kCylinders:
+      return cylinderHit(scene_.cylinders[primID], ray, tfar);
+    case GeometryRef::kCurve:
+      return curveHit(scene_.curves[g.index], g.index, ray, primID, u, tfar);
+    case GeometryRef::kSdfGrid:
+      return sdfGridHit(scene_.sdfGrids[g.index], ray, primID, tfar);
   }
-  if (geomID == impl_->cylinderGeom) return cylinderHit(scene_.cylinders[primID], ray, tfar);
-  if (geomID < impl_->geomToCurve.size() && impl_->geomToCurve[geomID] >= 0) {
-    const int c = impl_->geomToCurve[geomID];
-    return curveHit(scene_.curves[c], c, ray, primID, u, tfar);
-  }
-  if (geomID < impl_->geomToSdfGrid.size() && impl_->geomToSdfGrid[geomID] >= 0)
-    return sdfGridHit(scene_.sdfGrids[impl_->geomToSdfGrid[geomID]], ray, primID, tfar);
-  const int m = impl_->geomToMesh[geomID];
-  return triangleHit(scene_.meshes[m], impl_->meshConstants[m], m, primID, u, v, tfar);
+  return Hit{};
 }
 
 Hit Accel::intersect(const Ray& ray) const {
@@ -435,6 +446,7 @@ bool Accel::occluded(const Ray& ray) const {
   RTCRay r = toEmbree(ray);
   rtcOccluded1(impl_->scene, &context, &r);
   impl_->rays.add();
+  impl_->occlusionRays.add();
   impl_->check("occluded");
   return r.tfar < 0.0f && std::isinf(r.tfar);
 }
@@ -462,7 +474,7 @@ void Accel::intersectStream(const Ray* rays, Hit* hits, size_t count, bool coher
     impl_->check("intersect");
     for (size_t i = 0; i < n; ++i) {
       const RTCHit& h = rh[i].hit;
-      hits[b + i] = hitOf(rays[b + i], h.geomID, h.primID, h.u, h.v, rh[i].ray.tfar);
+      new (&hits[b + i]) Hit(hitOf(rays[b + i], h.geomID, h.primID, h.u, h.v, rh[i].ray.tfar));  // in place: no copy
     }
   }
   impl_->rays.add(count);
@@ -521,8 +533,8 @@ void Accel::intersectBatch(const Ray* rays, Hit* hits, size_t count, BatchQuery 
         rtcIntersect16(p.valid, impl_->scene, &context, &p.rh);
         impl_->check("intersect");
         for (size_t i = 0; i < n; ++i)
-          hits[b + i] = hitOf(rays[b + i], p.rh.hit.geomID[i], p.rh.hit.primID[i], p.rh.hit.u[i], p.rh.hit.v[i],
-                              p.rh.ray.tfar[i]);
+          new (&hits[b + i]) Hit(hitOf(rays[b + i], p.rh.hit.geomID[i], p.rh.hit.primID[i], p.rh.hit.u[i],
+                                       p.rh.hit.v[i], p.rh.ray.tfar[i]));  // in place: no copy
       });
       break;
   }
@@ -558,6 +570,7 @@ void Accel::occludedBatch(const Ray* rays, uint8_t* blocked, size_t count, Batch
       break;
   }
   impl_->rays.add(count);
+  impl_->occlusionRays.add(count);
 }
 
 }  // namespace rc

@@ -71,7 +71,9 @@ class Accel {
   static Ray spawnRayTo(const Hit& hit, const Vec3& target);
 
   const Scene& scene() const { return scene_; }
-  uint64_t raysTraced() const;  // total rays (intersect + occluded), for statistics
+  bool robustIntersections() const;  // Embree's robust mode is on (Scene::embreeRobust)
+  uint64_t raysTraced() const;           // total rays (intersect + occluded), for statistics
+  uint64_t occlusionRaysTraced() const;  // of these, the occlusion (shadow) rays
 
  private:
   struct Impl;

@@ -87,7 +87,8 @@ class PathPasses final : public PassRender {
   PathPasses(const RenderContext& ctx, const IntegratorSettings& settings, PathCore core, BatchQuery query,
              const std::string& name, SampleEstimator estimator)
       : ctx_(ctx), settings_(settings), core_(core), query_(query), media_(followsMedia(ctx.scene, settings.type)),
-        name_(name), estimator_(estimator), rays0_(ctx.accel.raysTraced()), camera_(ctx.scene.camera, ctx.scene.film) {
+        name_(name), estimator_(estimator), rays0_(ctx.accel.raysTraced()),
+        shadowRays0_(ctx.accel.occlusionRaysTraced()), camera_(ctx.scene.camera, ctx.scene.film) {
     loop_.spp = ctx.options.spp > 0 ? ctx.options.spp : ctx.scene.sampler.sampleCount;
     if (loop_.spp <= 0) throw Error("sampler: sample_count must be positive");
     loop_.seed = ctx.scene.sampler.seed + ctx.options.seed;
@@ -112,6 +113,7 @@ class PathPasses final : public PassRender {
     Image image = film.develop();
     const double seconds = secondsSince(start_);
     const double rays = static_cast<double>(ctx_.accel.raysTraced() - rays0_);
+    const double shadowRays = static_cast<double>(ctx_.accel.occlusionRaysTraced() - shadowRays0_);
     const int spp = loop_.spp * std::max(1, passes);
     stats.setText("integrator", name_);
     if (media_) stats.setText("path_core", "volpath (scalar; the scene has participating media)");
@@ -124,6 +126,12 @@ class PathPasses final : public PassRender {
     stats.set("nan_samples", static_cast<double>(total_.nanSamples));
     stats.set("rays", rays);
     stats.set("rays_per_s", seconds > 0.0 ? rays / seconds : 0.0);
+    // Per camera sample: closest-hit rays (camera and extension) and shadow rays, the figures to
+    // compare with another renderer's path loop (bench/mitsuba_ray_counts.py counts Mitsuba's).
+    const double samples = static_cast<double>(total_.samples + total_.nanSamples);
+    stats.set("shadow_rays", shadowRays);
+    stats.set("intersect_rays_per_sample", samples > 0.0 ? (rays - shadowRays) / samples : 0.0);
+    stats.set("shadow_rays_per_sample", samples > 0.0 ? shadowRays / samples : 0.0);
     stats.set("time_per_spp_s", seconds / spp);
     if (stopped) stats.set("interrupted", 1.0);
     return image;
@@ -162,6 +170,7 @@ class PathPasses final : public PassRender {
   const SampleEstimator estimator_;  // the scalar core's per-sample work
   const SteadyClock::time_point start_ = SteadyClock::now();
   const uint64_t rays0_;
+  const uint64_t shadowRays0_;
   const CameraModel camera_;
   RenderLoopSettings loop_;
   RenderLoopResult total_;  // summed over the passes (its `interrupted` unused: finish is told)

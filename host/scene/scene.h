@@ -176,6 +176,10 @@ struct Scene : ShapeLists {
   FilmSettings film;
   SamplerSettings sampler;
   IntegratorSettings integrator;
+  // Mitsuba's scene property embree_use_robust_intersections (default false): Embree's robust mode,
+  // watertight triangle tests and conservative box tests, at a cost in traversal (bench/RESULTS.md,
+  // twelfth session, trace16).
+  bool embreeRobust = false;
   // The names the file (with its includes) declares with <default name="...">: scene parameters
   // ($name) a -D define substitutes, whatever else the name means.
   std::set<std::string> defaultNames;

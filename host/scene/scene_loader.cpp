@@ -197,6 +197,17 @@ void Loader::sceneChild(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
   } else if (tag == "film" || tag == "rfilter") {
     throw LocatedError(whereOf(*file, node) + ": <" + tag + "> must be inside " +
                        (tag == "rfilter" ? "<film>" : "<sensor>"));
+  } else if (tag == "boolean" && std::string(node.attribute("name").value()) == "embree_use_robust_intersections") {
+    // The one property Mitsuba's scene itself reads that changes how rays are traced.
+    for (const pugi::xml_attribute& a : node.attributes())
+      if (std::string(a.name()) != "name" && std::string(a.name()) != "value")
+        throw LocatedError(whereOf(*file, node) + ": unsupported attribute '" + a.name() + "'");
+    if (!node.attribute("value")) throw LocatedError(whereOf(*file, node) + ": missing attribute 'value'");
+    try {
+      scene_.embreeRobust = parseBoolean(node.attribute("value").value());
+    } catch (const Error& e) {
+      throw LocatedError(whereOf(*file, node) + ": " + e.what());
+    }
   } else if (isPropertyTag(tag) || tag == "transform" || tag == "ref") {
     throw LocatedError(whereOf(*file, node) + ": <" + tag + "> is not allowed directly inside <scene>");
   } else {

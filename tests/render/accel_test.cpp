@@ -241,5 +241,57 @@ TEST(Accel, RayCountsAreExactUnderThreads) {
   for (const Hit& h : hits) EXPECT_NEAR(h.t, 1.0f, 1e-6f);
 }
 
+// The shadow-ray statistic (occlusionRaysTraced) counts occlusion queries of every form, and only them.
+TEST(Accel, OcclusionRaysAreCountedApartFromClosestHits) {
+  Scene s;
+  s.meshes.push_back(test::quad({-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, 0));
+  const Accel accel(s);
+  std::vector<Ray> rays(21);
+  for (size_t i = 0; i < rays.size(); ++i) {
+    rays[i].o = Vec3(0.1f * i - 1.0f, 0, 1);
+    rays[i].d = Vec3(0, 0, -1);
+  }
+  std::vector<Hit> hits(rays.size());
+  std::vector<uint8_t> blocked(rays.size());
+  accel.intersect(rays[0]);
+  accel.intersect(rays.data(), hits.data(), rays.size(), true);
+  for (BatchQuery q : {BatchQuery::Single, BatchQuery::Stream, BatchQuery::Packet16})
+    accel.intersectBatch(rays.data(), hits.data(), rays.size(), q);
+  EXPECT_EQ(accel.occlusionRaysTraced(), 0u);
+  accel.occluded(rays[0]);
+  EXPECT_EQ(accel.occlusionRaysTraced(), 1u);
+  for (BatchQuery q : {BatchQuery::Single, BatchQuery::Stream, BatchQuery::Packet16})
+    accel.occludedBatch(rays.data(), blocked.data(), rays.size(), q);
+  EXPECT_EQ(accel.occlusionRaysTraced(), 1u + 3u * rays.size());
+  EXPECT_EQ(accel.raysTraced(), 1u + 4u * rays.size() + accel.occlusionRaysTraced());
+}
+
+// Scene::embreeRobust selects Embree's robust mode: rays through the shared diagonal of a quad's two
+// triangles (where a non-watertight test may find neither) all hit it. The default mode (Mitsuba's)
+// finds the same hits away from the edge.
+TEST(Accel, RobustModeIsWatertightOnASharedEdge) {
+  for (bool robust : {true, false}) {
+    Scene s;
+    s.meshes.push_back(test::quad({-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, 0));
+    s.embreeRobust = robust;
+    const Accel accel(s);
+    Rng rng(5);
+    int diagonalHits = 0, interiorHits = 0;
+    const int n = 2000;
+    for (int i = 0; i < n; ++i) {
+      const float x = 1.8f * rng.nextFloat() - 0.9f;
+      Ray r;
+      r.o = Vec3(0.37f * x, 0.11f, 3.0f);  // from off the quad's axis, so the directions vary
+      r.d = glm::normalize(Vec3(x, x, 0.0f) - r.o);
+      diagonalHits += accel.intersect(r).valid() ? 1 : 0;
+      r.d = glm::normalize(Vec3(x, 0.5f * x + 0.05f, 0.0f) - r.o);
+      interiorHits += accel.intersect(r).valid() ? 1 : 0;
+    }
+    EXPECT_EQ(accel.robustIntersections(), robust);
+    if (robust) EXPECT_EQ(diagonalHits, n);
+    EXPECT_EQ(interiorHits, n);
+  }
+}
+
 }  // namespace
 }  // namespace rc

@@ -119,6 +119,31 @@ TEST(PathRender, StatsAndNanSamplesNeverReachTheFilm) {
   EXPECT_GT(stats.get("time_s"), 0.0);
 }
 
+// The per-sample ray statistics: max_depth 1 traces the camera ray alone; max_depth 2 extends a
+// path at most once and samples a light at most once (one vertex), and every ray is counted once.
+TEST(PathRender, RaysPerSampleFollowMaxDepth) {
+  for (int maxDepth : {1, 2}) {
+    Scene s = test::cornellLike(16, 16);
+    s.integrator.maxDepth = maxDepth;
+    const test::World w(std::move(s));
+    RenderStats stats;
+    renderPath(w, 2, 1, &stats);
+    const double samples = stats.get("samples") + stats.get("nan_samples");
+    const double intersect = stats.get("intersect_rays_per_sample"), shadow = stats.get("shadow_rays_per_sample");
+    EXPECT_DOUBLE_EQ((intersect + shadow) * samples, stats.get("rays"));
+    EXPECT_DOUBLE_EQ(shadow * samples, stats.get("shadow_rays"));
+    if (maxDepth == 1) {
+      EXPECT_EQ(intersect, 1.0);
+      EXPECT_EQ(shadow, 0.0);
+    } else {
+      EXPECT_GT(intersect, 1.0);
+      EXPECT_LE(intersect, 2.0);
+      EXPECT_GT(shadow, 0.0);
+      EXPECT_LE(shadow, 1.0);
+    }
+  }
+}
+
 TEST(PathRender, HideEmittersAndMaxDepthOne) {
   Scene s = test::cornellLike(16, 16);
   s.integrator.maxDepth = 1;  // only directly visible emission: everything black but the light

@@ -375,6 +375,19 @@ TEST(SceneXml, UnknownElementsAndMisplacedOnes) {
   expectError([&] { loadText(dir, sceneXml("<shape/>")); }, {"missing attribute 'type'"});
 }
 
+// Mitsuba's scene property embree_use_robust_intersections: false unless the file sets it; any other
+// property directly inside <scene> stays an error.
+TEST(SceneXml, EmbreeRobustIntersectionsIsTheSceneProperty) {
+  TempDir dir;
+  EXPECT_FALSE(loadText(dir, sceneXml("")).embreeRobust);
+  EXPECT_TRUE(loadText(dir, sceneXml("<boolean name=\"embree_use_robust_intersections\" value=\"true\"/>")).embreeRobust);
+  EXPECT_FALSE(loadText(dir, sceneXml("<boolean name=\"embree_use_robust_intersections\" value=\"false\"/>")).embreeRobust);
+  expectError([&] { loadText(dir, sceneXml("<boolean name=\"embree_use_robust_intersections\" value=\"maybe\"/>")); },
+              {"maybe"});
+  expectError([&] { loadText(dir, sceneXml("<boolean name=\"embree_use_robust\" value=\"true\"/>")); },
+              {"not allowed directly inside <scene>"});
+}
+
 TEST(SceneXml, LenientModeTurnsUnsupportedIntoWarnings) {
   TempDir dir;
   const std::string xml = sceneXml(
