@@ -41,6 +41,10 @@ struct RcacheParams {
   // (equally unbiased) image on another run or machine, and tiles or walk frames could choose apart.
   bool costPilot = false;
   float costPilotShare = 0.05f;  // the cost pilot's budget, a share of the path-traced render
+  // Whether the fill's predicted payoff (cache/fill_payoff.h) may path trace an image the share
+  // pilot would cache, where the cost pilot did not decide. Deterministic per seed (rays and
+  // samples, not timings), so on by default.
+  bool fillPayoff = true;
 };
 
 // Throws rc::Error("parameter 'x' = '...': ...") for a malformed or out-of-range value.
