@@ -200,10 +200,6 @@ void RcachePasses::chooseTechnique(const Vec3& lo, const Vec3& hi) {
 
 void RcachePasses::checkFillPayoff() {
   if (!params_.fillPayoff || fallback_.pathTrace || fallback_.coherencePoints == 0) return;
-  // Its points cover the rendered window: tiles of one image could decide apart, so a crop window
-  // keeps the share pilot's verdict (which the whole sensor makes alike for every tile).
-  const FilmSettings& film = ctx_.scene.film;
-  if (film.cropX != 0 || film.cropY != 0 || film.imageWidth() != film.width || film.imageHeight() != film.height) return;
   payoff_ = measureFillPayoff(*run_, settings_, fallback_);
   if (!payoff_.pays) {
     fallback_.pathTrace = true;
