@@ -42,9 +42,10 @@ struct RcacheParams {
   bool costPilot = false;
   float costPilotShare = 0.05f;  // the cost pilot's budget, a share of the path-traced render
   // Whether the fill's predicted payoff (cache/fill_payoff.h) may path trace an image the share
-  // pilot would cache, where the cost pilot did not decide. Deterministic per seed (rays and
-  // samples, not timings), so on by default.
-  bool fillPayoff = true;
+  // pilot would cache, where the cost pilot did not decide. Off by default: from four samples at
+  // up to 1024 points it path traced the tutorials' Cornell box at 4 spp, where the cached image's
+  // relMSE was 1/28 of the path-traced one's (bench/RESULTS.md, pay17).
+  bool fillPayoff = false;
 };
 
 // Throws rc::Error("parameter 'x' = '...': ...") for a malformed or out-of-range value.

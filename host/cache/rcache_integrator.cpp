@@ -84,8 +84,9 @@ class RcachePasses final : public PassRender {
   // Phase 0: the share pilot (cache/path_fallback.h), with and without the lobe split, then the
   // cost pilot (cache/cost_pilot.h) among the path tracer and the variants the share pilot keeps.
   void chooseTechnique(const Vec3& lo, const Vec3& hi);
-  // Where the share pilot caches and nothing timed decided: whether the fill can pay at all,
-  // predicted (cache/fill_payoff.h); path traces where it cannot.
+  // Where the share pilot caches and nothing timed decided (fill_payoff=true, or the cost pilot
+  // tried no candidate): whether the fill can pay at all, predicted (cache/fill_payoff.h); path
+  // traces where it cannot.
   void checkFillPayoff();
   const RenderContext& ctx_;
   const IntegratorSettings& settings_;
@@ -168,7 +169,7 @@ void RcachePasses::chooseTechnique(const Vec3& lo, const Vec3& hi) {
   }
   if (fallback_.pilotPoints == 0) return;
   if (!params_.costPilot) {
-    checkFillPayoff();
+    if (params_.fillPayoff) checkFillPayoff();
     return;
   }
   std::vector<CandidateKind> kinds;
@@ -199,7 +200,7 @@ void RcachePasses::chooseTechnique(const Vec3& lo, const Vec3& hi) {
 }
 
 void RcachePasses::checkFillPayoff() {
-  if (!params_.fillPayoff || fallback_.pathTrace || fallback_.coherencePoints == 0) return;
+  if (fallback_.pathTrace || fallback_.coherencePoints == 0) return;
   payoff_ = measureFillPayoff(*run_, settings_, fallback_);
   if (!payoff_.pays) {
     fallback_.pathTrace = true;

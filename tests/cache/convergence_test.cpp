@@ -26,13 +26,9 @@ TEST(Convergence, ErrorFallsWithRaysAndAccuracy) {
   double err[3];
   for (int i = 0; i < 3; ++i) {
     t0 = std::chrono::steady_clock::now();
-    // 16 spp so that the (exact, but noisy) direct light does not hide the cache's error. The
-    // records are the subject, so the fill's payoff does not decide (it path traces 2048-ray
-    // records at this budget).
+    // 16 spp so that the (exact, but noisy) direct light does not hide the cache's error.
     const auto r = test::renderScene(
-        s,
-        test::rcacheSettings(s, {{"a", settings[i].a}, {"rays", settings[i].rays}, {"order", "8"}, {"fill_payoff", "false"}}),
-        16, 1);
+        s, test::rcacheSettings(s, {{"a", settings[i].a}, {"rays", settings[i].rays}, {"order", "8"}}), 16, 1);
     const double t = seconds(t0);
     err[i] = compareImages(r.image.pixels, ref.image.pixels).relmse;
     std::printf("rcache a=%s rays=%s: relMSE %.5f, %.2f s, %g records\n", settings[i].a, settings[i].rays, err[i], t,

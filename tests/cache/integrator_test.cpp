@@ -203,8 +203,7 @@ TEST(RcacheIntegrator, ImportanceSampledFloorKeepsTheEmitterSeenByItsBsdfSample)
     s.emitters.push_back(wallLight);
     test::addQuad(s, {-0.5f, 0.1f, -0.99f}, {0.5f, 0.1f, -0.99f}, {0.5f, 0.5f, -0.99f}, {-0.5f, 0.5f, -0.99f}, 4,
                   static_cast<int>(s.emitters.size()) - 1);
-    // The cache's estimator is the subject: the fill's payoff does not decide (16×12 px).
-    auto rc = test::renderScene(s, test::rcacheSettings(s, {{"rays", "128"}, {"fill_payoff", "false"}}), 256, 3);
+    auto rc = test::renderScene(s, test::rcacheSettings(s, {{"rays", "128"}}), 256, 3);
     auto pt = test::renderScene(s, test::pathSettings(s), 256, 4);
     double a = 0, b = 0;
     for (const Color& c : rc.image.pixels) a += luminance(c);

@@ -112,9 +112,8 @@ TEST(LobeSplit, RoughPlasticUnderSkyAgreesWithPathTracerPerBlock) {
   EXPECT_GT(split.stats.get("records"), 0.0);
   EXPECT_EQ(test::statText(split.stats, "env_cache"), "split");
   // The whole environment light-sampled by the bases (no environment in the records) too.
-  // (The fill's payoff does not decide: the cache's estimator is the subject.)
-  const auto sampled = test::renderScene(
-      s, test::rcacheSettings(s, {{"env_cache", "false"}, {"lobe_split", "true"}, {"fill_payoff", "false"}}), 16, 3);
+  const auto sampled =
+      test::renderScene(s, test::rcacheSettings(s, {{"env_cache", "false"}, {"lobe_split", "true"}}), 16, 3);
   EXPECT_GT(sampled.stats.get("lobe_split_fraction"), 0.3);
   const test::BlockStats r = test::blockMeans(ref.image, 16), m = test::blockMeans(split.image, 16),
                          n = test::blockMeans(sampled.image, 16);
