@@ -15,10 +15,9 @@
 // The fill then costs rays/r² ∝ spp, as the final pass does: the cache's share of the time stays
 // about constant as the budget grows, up to kBudgetMaxSpp (below). Below 16 spp the same laws
 // run the other way, down to 1 spp (a quarter of the rays, twice the radii): a fill sized for 16
-// spp costs there many times the final pass (cornell_glossy at 256², 2 spp: 90 % of the render),
-// while the error the final pass leaves at those few samples is far above what the coarser records
-// add (bench/RESULTS.md "The fill follows the budget below 16 spp"), so the path tracer, paying
-// no fill, was ahead at the loose end of the error ladder. Only the values not given on the
+// spp costs there many times the final pass, while the error the final pass leaves at those few
+// samples is far above what the coarser records add (bench/RESULTS.md "The loose end of the
+// error ladder"), so the path tracer, paying no fill, was ahead at the loose end of the ladder. Only the values not given on the
 // command line or in the file follow the budget (RcacheParams::follow); a given one is used as
 // given.
 #include "cache/cache_params.h"
