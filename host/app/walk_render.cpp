@@ -33,7 +33,8 @@ std::string sharedCachePath(const WalkJob& job) {
 // Whether the rcache integrator's pilot path-traces frame `frame` (cache/path_fallback.h): asked
 // on a one-pixel crop at 1 spp, since the pilot samples the whole sensor whatever the crop. The
 // shared cache is a cache file the walk saves, which the pilot would not consider, so the walk
-// asks first.
+// asks first. Not the fill's predicted payoff (cache/fill_payoff.h): it weighs one image's fill
+// against one image's samples, and the walk's frames share theirs.
 bool pilotPathTraces(const WalkJob& job, const Camera& camera, int frame) {
   const FilmSettings film = job.scene.film;
   job.scene.camera = camera;
@@ -41,16 +42,24 @@ bool pilotPathTraces(const WalkJob& job, const Camera& camera, int frame) {
   RenderContext ctx = job.ctx;
   ctx.options.seed += static_cast<uint64_t>(frame);
   ctx.options.spp = 1;
-  if (job.rcache) job.rcache->setCacheFiles({});
+  const bool payoff = job.rcache && job.rcache->fillPayoff();
+  if (job.rcache) {
+    job.rcache->setCacheFiles({});
+    job.rcache->setFillPayoff(false);
+  }
   ctx.progress = nullptr;
   RenderStats stats;
+  auto restore = [&] {
+    job.scene.film = film;
+    if (job.rcache) job.rcache->setFillPayoff(payoff);
+  };
   try {
     job.integrator.render(ctx, stats);
   } catch (...) {
-    job.scene.film = film;
+    restore();
     throw;
   }
-  job.scene.film = film;
+  restore();
   return stats.text("fallback").rfind("path traced", 0) == 0;
 }
 

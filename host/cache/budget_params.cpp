@@ -7,7 +7,7 @@ namespace rc {
 
 namespace {
 
-double budgetGrowth(int spp) { return double(std::clamp(spp, kBudgetBaseSpp, kBudgetMaxSpp)) / kBudgetBaseSpp; }
+double budgetGrowth(int spp) { return double(std::clamp(spp, kBudgetMinSpp, kBudgetMaxSpp)) / kBudgetBaseSpp; }
 
 }  // namespace
 
@@ -26,6 +26,8 @@ RcacheParams paramsForBudget(const RcacheParams& params, int spp) {
   if (p.follow.a) p.a *= scale;
   if (p.follow.rMin) p.rMinPx *= scale;
   if (p.follow.rMax) p.rMaxPx = std::max(p.rMaxPx * scale, p.rMinPx);
+  // A grown r_min must not pass a given r_max.
+  if (p.follow.rMin) p.rMinPx = std::min(p.rMinPx, p.rMaxPx);
   return p;
 }
 

@@ -64,6 +64,7 @@ RcacheParams readRcacheParams(ParamReader& in) {
                                   : RcacheParams::LobeSplitMode::Off;
   p.costPilot = in.flag("cost_pilot", p.costPilot);
   p.costPilotShare = in.real("cost_pilot_share", p.costPilotShare, 0.0f, 1e6f);
+  p.fillPayoff = in.flag("fill_payoff", p.fillPayoff);
   const std::string frame = in.choice("frame", "auto", {"auto", "world", "record"});
   p.worldFrame = frame != "record";
   p.autoFrame = frame == "auto";

@@ -41,6 +41,12 @@ struct RcacheParams {
   // (equally unbiased) image on another run or machine, and tiles or walk frames could choose apart.
   bool costPilot = false;
   float costPilotShare = 0.05f;  // the cost pilot's budget, a share of the path-traced render
+  // Whether the fill's predicted payoff (cache/fill_payoff.h) may path trace an image the share
+  // pilot would cache, where the cost pilot did not decide. Off by default: its variance shares,
+  // from four samples at up to 1024 points, miss rare bright paths, and it path traced a corpus
+  // Cornell box that the cache renders far better (bench/RESULTS.md "The loose end of the error
+  // ladder").
+  bool fillPayoff = false;
 };
 
 // Throws rc::Error("parameter 'x' = '...': ...") for a malformed or out-of-range value.

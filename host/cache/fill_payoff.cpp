@@ -60,7 +60,10 @@ FillPayoff measureFillPayoff(const RcacheRun& run, const IntegratorSettings& set
     p.reason = "not predicted: under a low-discrepancy sampler the error does not fall as 1/spp";
     return p;
   }
-  const int W = run.width, H = run.height;
+  // The points cover the whole sensor, not the crop window, as the share pilot's do: a tile (rcache
+  // --crop, the Dask driver) then decides as the full image does.
+  const FilmSettings& film = run.ctx.scene.film;
+  const int W = film.width, H = film.height;
   const double points = std::clamp(double(W) * H * std::max(1, run.spp) * kPayoffSampleShare / 4.0, kMinPayoffPoints,
                                    kMaxPayoffPoints);
   const int stride = std::max(1, int(std::sqrt(double(W) * H / points)));
@@ -68,7 +71,7 @@ FillPayoff measureFillPayoff(const RcacheRun& run, const IntegratorSettings& set
   std::vector<uint64_t> seeds;
   for (int y = stride / 2; y < H; y += stride)
     for (int x = stride / 2; x < W; x += stride) {
-      filmPos.emplace_back(float(x) + 0.5f, float(y) + 0.5f);
+      filmPos.emplace_back(float(x - film.cropX) + 0.5f, float(y - film.cropY) + 0.5f);
       seeds.push_back(hashMix(run.seed, uint64_t(y) * uint64_t(W) + uint64_t(x), kSaltFillPayoff));
     }
   std::vector<Primary> prim;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "render/direct_light.h"
 
@@ -48,21 +49,38 @@ float environmentSplitThreshold(int W, int H, const std::vector<Color>& texels, 
   if (W < 2 || H < 3 || texels.size() != static_cast<size_t>(W) * H) return INFINITY;
   const TexelGeometry g = texelGeometry(W, H);
   const size_t n = texels.size();
-  std::vector<float> lum(n);
+  static const Vec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  // The hemispheres a texel lies in (at most three: one of each opposite pair) and each
+  // hemisphere's solid angle do not depend on τ: found once, not in each of the bisection's
+  // passes (which then add the same terms in the same order: the same τ).
+  struct Texel {
+    float lum;
+    uint8_t hemispheres = 0;
+    uint8_t hemisphere[3] = {};
+  };
+  std::vector<Texel> tx(n);
+  double w[6] = {};
   float lo = INFINITY, hi = 0.0f;
   for (size_t i = 0; i < n; ++i) {
-    lum[i] = std::max(0.0f, luminance(texels[i]));
-    if (lum[i] > 0.0f) lo = std::min(lo, lum[i]), hi = std::max(hi, lum[i]);
+    Texel& t = tx[i];
+    t.lum = std::max(0.0f, luminance(texels[i]));
+    if (t.lum > 0.0f) lo = std::min(lo, t.lum), hi = std::max(hi, t.lum);
+    for (int h = 0; h < 6; ++h)
+      if (glm::dot(g.dir[i], kAxes[h]) > 0.0f) {
+        w[h] += g.solidAngle[i];
+        t.hemisphere[t.hemispheres++] = static_cast<uint8_t>(h);
+      }
   }
   if (!(hi > 0.0f)) return INFINITY;
-  static const Vec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   // Whether the map clamped at tau keeps every hemisphere's variance within κ·(brightest mean)².
   auto passes = [&](float tau) {
-    double w[6] = {}, m[6] = {}, q[6] = {};
+    double m[6] = {}, q[6] = {};
     for (size_t i = 0; i < n; ++i) {
-      const double l = std::min(lum[i], tau), om = g.solidAngle[i];
-      for (int h = 0; h < 6; ++h)
-        if (glm::dot(g.dir[i], kAxes[h]) > 0.0f) w[h] += om, m[h] += om * l, q[h] += om * l * l;
+      const double l = std::min(tx[i].lum, tau), om = g.solidAngle[i];
+      for (uint8_t k = 0; k < tx[i].hemispheres; ++k) {
+        const int h = tx[i].hemisphere[k];
+        m[h] += om * l, q[h] += om * l * l;
+      }
     }
     double brightest = 0.0, worstVar = 0.0;
     for (int h = 0; h < 6; ++h) {

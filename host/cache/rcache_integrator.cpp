@@ -84,6 +84,10 @@ class RcachePasses final : public PassRender {
   // Phase 0: the share pilot (cache/path_fallback.h), with and without the lobe split, then the
   // cost pilot (cache/cost_pilot.h) among the path tracer and the variants the share pilot keeps.
   void chooseTechnique(const Vec3& lo, const Vec3& hi);
+  // Where the share pilot caches and nothing timed decided (fill_payoff=true, or the cost pilot
+  // tried no candidate): whether the fill can pay at all, predicted (cache/fill_payoff.h); path
+  // traces where it cannot.
+  void checkFillPayoff();
   const RenderContext& ctx_;
   const IntegratorSettings& settings_;
   const int spp_;
@@ -163,7 +167,11 @@ void RcachePasses::chooseTechnique(const Vec3& lo, const Vec3& hi) {
     withSplit = decideFallback(*run_);
     engine_->setLobeSplit(false);
   }
-  if (!params_.costPilot || fallback_.pilotPoints == 0) return;
+  if (fallback_.pilotPoints == 0) return;
+  if (!params_.costPilot) {
+    if (params_.fillPayoff) checkFillPayoff();
+    return;
+  }
   std::vector<CandidateKind> kinds;
   if (!fallback_.pathTrace)
     kinds.push_back(params_.lobeSplit == Mode::On && anySplit ? CandidateKind::RcacheLobeSplit : CandidateKind::Rcache);
@@ -172,13 +180,8 @@ void RcachePasses::chooseTechnique(const Vec3& lo, const Vec3& hi) {
   cost_ = runCostPilot({ctx_, settings_, params_, tables_, backend_, lo, hi, spp_, run_->seed, run_->lowDiscrepancy,
                         kinds});
   if (!cost_.skipped.empty() && cost_.choice.candidates.size() < 2) {
-    // No variant's pilot fit its budget: whether the fill can pay at all, predicted (cache/fill_payoff.h).
-    if (fallback_.pathTrace || fallback_.coherencePoints == 0) return;
-    payoff_ = measureFillPayoff(*run_, settings_, fallback_);
-    if (!payoff_.pays) {
-      fallback_.pathTrace = true;
-      fallback_.reason = payoff_.reason + " (" + fallback_.reason + ")";
-    }
+    // No variant's pilot fit its budget.
+    checkFillPayoff();
     return;
   }
   // Not run (small image, crop window) or interrupted: the share pilot's verdict stands.
@@ -193,6 +196,15 @@ void RcachePasses::chooseTechnique(const Vec3& lo, const Vec3& hi) {
     fallback_.reason = "path traced by the cost pilot (" + fallback_.reason + ")";
   } else {
     fallback_.pathTrace = false;
+  }
+}
+
+void RcachePasses::checkFillPayoff() {
+  if (fallback_.pathTrace || fallback_.coherencePoints == 0) return;
+  payoff_ = measureFillPayoff(*run_, settings_, fallback_);
+  if (!payoff_.pays) {
+    fallback_.pathTrace = true;
+    fallback_.reason = payoff_.reason + " (" + fallback_.reason + ")";
   }
 }
 

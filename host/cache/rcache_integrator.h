@@ -99,6 +99,9 @@ class RcacheIntegrator : public Integrator {
   void setBackend(ShBackend* backend) { backend_ = backend; }
   void setCacheFiles(const CacheFiles& files) { files_ = files; }
   const CacheFiles& cacheFiles() const { return files_; }
+  // Whether the fill's predicted payoff (cache/fill_payoff.h) may path trace (fill_payoff).
+  bool fillPayoff() const { return params_.fillPayoff; }
+  void setFillPayoff(bool on) { params_.fillPayoff = on; }
 
  private:
   IntegratorSettings settings_;

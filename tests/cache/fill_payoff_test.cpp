@@ -63,33 +63,47 @@ TEST(FillPayoff, PixelsPerRecordFromTheCoherenceTest) {
   EXPECT_NEAR(pixelsPerRecord(0.999, 0.5, 10.0), kPiD * 100.0, 1e-9);
 }
 
-// Two diffuse spheres on a diffuse floor under a sky with a sun, 96² at 1 spp, records of 16384
-// rays: the cost pilot cannot afford a cache candidate (its pilot would cost more than 5 % of a
-// 1-spp render), the records would serve every point and serve their neighbours (smooth surfaces),
-// but at 1 spp a fill of such records costs more rays per pixel than the path tracer needs to reach
-// rcache's error: the path integrator's image, bit for bit. (At the budget's own record size the
-// fill pays here: the envmap's bilinear sampling density leaves little of the sun's direct light as
-// noise, so most of the path tracer's variance is indirect, which the records remove.)
-TEST(FillPayoff, OneSppWithCostlyRecordsIsPathTracedWhenTheCostPilotCannotTry) {
+// Two diffuse spheres on a diffuse floor under a sky with a sun, 96² at 1 spp, records of 65536
+// rays: the records would serve every point and serve their neighbours (smooth surfaces), but at
+// 1 spp a fill of such records costs more rays per pixel than the path tracer needs to reach
+// rcache's error: the path integrator's image, bit for bit — with fill_payoff=true, and under the
+// cost pilot, which cannot afford a cache candidate there (its pilot would cost more than 5 % of a
+// 1-spp render). At the budget's own record size the fill pays here (the envmap's bilinear
+// sampling density leaves little of the sun's direct light as noise, so most of the path tracer's
+// variance is indirect, which the records remove): cached, by the same prediction. At the defaults
+// (fill_payoff=false) nothing is predicted and the share pilot's verdict stands.
+TEST(FillPayoff, OneSppWithCostlyRecordsIsPathTracedWhereThePayoffDecides) {
   Scene base;
   for (int i = 0; i < 3; ++i) base.bsdfs.push_back(test::diffuse(0.6f, 0.55f, 0.5f));
   const Scene s = test::twoSpheresUnderSky(base, "left", "right", 96);
   const auto path = test::renderScene(s, test::pathSettings(s), 1, 3);
-  const auto r = test::renderScene(s, test::rcacheSettings(s, {{"cost_pilot", "true"}, {"rays", "16384"}}), 1, 3);
-  const std::string why = test::statText(r.stats, "fallback");
-  std::printf("%s\n", why.c_str());
-  EXPECT_NE(test::statText(r.stats, "cost_pilot").find("payoff decides"), std::string::npos);
-  EXPECT_EQ(why.rfind("path traced, the fill cannot pay", 0), 0u) << why;
-  EXPECT_GT(r.stats.get("pilot_neighbour_served_bound"), minNeighbourServed());  // coherence passed
-  EXPECT_LE(r.stats.get("fill_payoff_indirect_share"), 1.0);
-  EXPECT_GT(r.stats.get("fill_payoff_rays_per_pixel"), r.stats.get("fill_payoff_path_rays_per_pixel"));
-  EXPECT_EQ(r.stats.get("records", 0.0), 0.0);
-  ASSERT_EQ(r.image.pixels.size(), path.image.pixels.size());
-  for (size_t i = 0; i < path.image.pixels.size(); ++i) ASSERT_EQ(r.image.pixels[i], path.image.pixels[i]) << i;
-  // Without the cost pilot the share pilot's verdict stands (the default): cached.
-  const auto plain = test::renderScene(s, test::rcacheSettings(s), 1, 3);
-  EXPECT_EQ(test::statText(plain.stats, "fallback").rfind("cached", 0), 0u);
-  EXPECT_EQ(plain.stats.get("fill_payoff_indirect_share", -1.0), -1.0);
+  auto expectPathTracedByThePayoff = [&](const test::RenderResult& r) {
+    const std::string why = test::statText(r.stats, "fallback");
+    std::printf("%s\n", why.c_str());
+    EXPECT_EQ(why.rfind("path traced, the fill cannot pay", 0), 0u) << why;
+    EXPECT_GT(r.stats.get("pilot_neighbour_served_bound"), minNeighbourServed());  // coherence passed
+    EXPECT_LE(r.stats.get("fill_payoff_indirect_share"), 1.0);
+    EXPECT_GT(r.stats.get("fill_payoff_rays_per_pixel"), r.stats.get("fill_payoff_path_rays_per_pixel"));
+    EXPECT_EQ(r.stats.get("records", 0.0), 0.0);
+    ASSERT_EQ(r.image.pixels.size(), path.image.pixels.size());
+    for (size_t i = 0; i < path.image.pixels.size(); ++i) ASSERT_EQ(r.image.pixels[i], path.image.pixels[i]) << i;
+  };
+  expectPathTracedByThePayoff(
+      test::renderScene(s, test::rcacheSettings(s, {{"rays", "65536"}, {"fill_payoff", "true"}}), 1, 3));
+  const auto piloted = test::renderScene(s, test::rcacheSettings(s, {{"cost_pilot", "true"}, {"rays", "65536"}}), 1, 3);
+  EXPECT_NE(test::statText(piloted.stats, "cost_pilot").find("payoff decides"), std::string::npos);
+  expectPathTracedByThePayoff(piloted);
+  // The budget's records: the same prediction caches.
+  const auto plain = test::renderScene(s, test::rcacheSettings(s, {{"fill_payoff", "true"}}), 1, 3);
+  const std::string why = test::statText(plain.stats, "fallback");
+  EXPECT_EQ(why.rfind("cached", 0), 0u) << why;
+  EXPECT_EQ(test::statText(plain.stats, "fill_payoff").rfind("the fill can pay", 0), 0u);
+  EXPECT_LE(plain.stats.get("fill_payoff_rays_per_pixel"), plain.stats.get("fill_payoff_path_rays_per_pixel"));
+  EXPECT_GT(plain.stats.get("records", 0.0), 0.0);
+  // The defaults: the share pilot's verdict stands, nothing predicted.
+  const auto unpredicted = test::renderScene(s, test::rcacheSettings(s), 1, 3);
+  EXPECT_EQ(test::statText(unpredicted.stats, "fallback").rfind("cached", 0), 0u);
+  EXPECT_EQ(unpredicted.stats.get("fill_payoff_indirect_share", -1.0), -1.0);
 }
 
 }  // namespace
