@@ -538,7 +538,7 @@ RecordInfo CacheEngine::clampRecord(const CacheKey& key, const ShadePoint& cand,
   // a·R to a share a of it. Norms run over all coefficients and channels, so the higher bands of
   // a glossy record are held to the same bound as its mean. Where an object touches a surface the
   // light rises steeply and then levels off (occlusion, not linear in distance): a looser bound
-  // (‖∇Λ‖·a·R ≤ ‖Λ‖, before the eleventh session) let records reach across the contact with a
+  // (‖∇Λ‖·a·R ≤ ‖Λ‖) let records reach across the contact with a
   // slope valid only beside it, brightening the contact (bench/RESULTS.md, contact17).
   float Rg = INFINITY;
   const size_t coeffs = 3 * static_cast<size_t>(key.order) * key.order;
