@@ -33,6 +33,14 @@ Scenes that need mitsuba-data's Git-LFS assets missing from the snapshot fail in
   DRJIT_LIBLLVM_PATH=... /root/.cache/rcache/bench-venv/bin/python bench/real_scenes.py \
       --rcache build/rcache --corpus /tmp/corpus --res 64 --spp 64 --spp-mitsuba 256 \\
       [--seeds 4 --seeds-mitsuba 4 --variant llvm_ad_rgb (the defaults)] [--resume] [--only NAME...]
+      [--first-seed N] [--seed-per-scene]
+
+Seeds: rcache renders seeds N … N+K−1 and Mitsuba N−1 … N+K'−2 (N = --first-seed, default 1: the
+seeds of earlier runs). A rerun with another N draws fresh samples. --seed-per-scene adds to N a
+stable offset drawn from the scene's path, so that a family of files sharing floor, envmap and camera
+(the matpreview scenes) does not read one and the same draw: with fixed seeds their errors correlate
+and a 4-seed fluctuation shows in every member at once. Image names carry the first seed, so --resume
+keeps only references drawn with the same seeds.
 """
 import argparse
 import glob
@@ -42,6 +50,7 @@ import re
 import shutil
 import subprocess
 import sys
+import zlib
 
 import numpy as np
 
@@ -56,8 +65,8 @@ MITSUBA_SNIPPET = r"""
 import sys, mitsuba as mi
 mi.set_variant(sys.argv[4])
 scene = mi.load_file(sys.argv[1])
-for seed in range(int(sys.argv[5])):
-    mi.Bitmap(mi.render(scene, spp=int(sys.argv[3]), seed=seed)).write(sys.argv[2] % seed)
+for k in range(int(sys.argv[5])):
+    mi.Bitmap(mi.render(scene, spp=int(sys.argv[3]), seed=int(sys.argv[6]) + k)).write(sys.argv[2] % k)
 """
 
 
@@ -104,6 +113,22 @@ def first_error(text):
     return text.strip()[:300]
 
 
+def first_seed_of(rel, args):
+    """--first-seed, plus a stable per-scene offset (a multiple of 1000, so runs with nearby --first-seed
+    values never share seeds) where --seed-per-scene asks for one."""
+    offset = 1000 * (zlib.crc32(rel.encode()) % 100000) if args.seed_per_scene else 0
+    return args.first_seed + offset
+
+
+def timeout_for(rel, args):
+    """--timeout, or the first --timeout-for PATTERN=SECONDS whose pattern is a substring of the path."""
+    for item in args.timeout_for or []:
+        pattern, seconds = item.rsplit("=", 1)
+        if pattern in rel:
+            return int(seconds)
+    return args.timeout
+
+
 def load_exr(path):
     import mitsuba as mi
     return np.array(mi.Bitmap(path), dtype=np.float64)[..., :3]
@@ -123,8 +148,16 @@ def main():
     ap.add_argument("--variant", default="llvm_ad_rgb", help="Mitsuba variant of the reference")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--timeout", type=int, default=300)
+    ap.add_argument("--timeout-for", nargs="*", metavar="PATTERN=SECONDS",
+                    help="a shorter (or longer) limit for scenes whose path contains PATTERN")
+    ap.add_argument("--first-seed", type=int, default=1, help="rcache's first seed (Mitsuba's is one less)")
+    ap.add_argument("--seed-per-scene", action="store_true",
+                    help="offset the first seed by a stable hash of the scene's path")
     ap.add_argument("--no-mitsuba", action="store_true")
     ap.add_argument("--resume", action="store_true", help="keep Mitsuba references already in --work")
+    ap.add_argument("--compare-only", action="store_true",
+                    help="only the comparison, for scenes whose Mitsuba references --work already holds (no load, "
+                         "lenient or Mitsuba runs): e.g. --compare-integrator rcache after a run of the path tracer")
     ap.add_argument("--only", nargs="*", help="substrings of scene paths to run")
     ap.add_argument("--compare-integrator", help="compare this integrator (e.g. path, rcache) instead of the file's")
     args = ap.parse_args()
@@ -143,35 +176,42 @@ def main():
     for rel in scenes:
         path = os.path.join(copy, rel)
         tag = rel.replace("/", "_")[:-4]
-        row = {"scene": rel}
+        first = first_seed_of(rel, args)
+        timeout = timeout_for(rel, args)
+        row = {"scene": rel, "first_seed": first}
         base = [rcache, path, "-t", str(args.threads), "--quiet"]
-        for integ in ("path", "rcache"):
+        for integ in ("path", "rcache") if not args.compare_only else ():
             rc, text = run(base + ["--integrator", integ, "--spp", "4", "-o", os.path.join(out, tag + "_" + integ + "_4.exr")],
-                           args.timeout)
+                           timeout)
             row["load_" + integ] = rc == 0 or first_error(text)
-        rc, text = run(base + ["--lenient", "--integrator", "path", "--spp", "4", "-o", os.path.join(out, tag + "_lenient.exr")],
-                       args.timeout)
-        row["lenient"] = rc == 0 or first_error(text)
-        if not args.no_mitsuba:
+        if not args.compare_only:
+            rc, text = run(base + ["--lenient", "--integrator", "path", "--spp", "4", "-o", os.path.join(out, tag + "_lenient.exr")],
+                           timeout)
+            row["lenient"] = rc == 0 or first_error(text)
+        loads = row.get("load_path", True) is True  # (not checked with --compare-only: the earlier run's)
+        if args.compare_only and not all(os.path.exists(os.path.join(out, "%s_mitsuba_f%d_s%d.exr" % (tag, first - 1, k)))
+                                         for k in range(args.seeds_mitsuba)):
+            row["mitsuba"] = "no kept reference"
+        elif not args.no_mitsuba:
             # Whether Mitsuba renders it at all (4 spp), then a reference only where rcache renders too.
-            ref = os.path.join(out, tag + "_mitsuba_s%d.exr")
+            ref = os.path.join(out, "%s_mitsuba_f%d_s%%d.exr" % (tag, first - 1))
             refs = [ref % k for k in range(args.seeds_mitsuba)]
-            kept = args.resume and all(os.path.exists(r) for r in refs)
-            rc, text = (0, "") if kept else run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, "4", args.variant, "1"],
-                                                args.timeout)
+            kept = (args.resume or args.compare_only) and all(os.path.exists(r) for r in refs)
+            rc, text = (0, "") if kept else run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, "4", args.variant, "1", str(first - 1)],
+                                                timeout)
             row["mitsuba"] = rc == 0 or first_error(text.strip().splitlines()[-1] if text.strip() else text)
-            if row["mitsuba"] is True and row["load_path"] is True and not kept:
+            if row["mitsuba"] is True and loads and not kept:
                 rc, text = run([sys.executable, "-c", MITSUBA_SNIPPET, path, ref, str(args.spp_mitsuba // args.seeds_mitsuba),
-                                args.variant, str(args.seeds_mitsuba)], args.timeout * 4)
+                                args.variant, str(args.seeds_mitsuba), str(first - 1)], timeout * 4)
                 row["mitsuba"] = rc == 0 or first_error(text)
-            if row["mitsuba"] is True and row["load_path"] is True:
+            if row["mitsuba"] is True and loads:
                 # The file's own integrator where rcache takes it (a `direct` file must be compared as
                 # direct illumination, not as the path tracer --integrator path would make of it), else
                 # the path tracer — also where the file asks for a path tracer, which rcache's `auto`
                 # would turn into its radiance cache (an approximation, not the estimator Mitsuba runs).
                 probe_stats = os.path.join(out, tag + "_auto_stats.json")
-                rc, text = run(base + ["--spp", "1", "-o", os.path.join(out, tag + "_auto_1.exr"), "--stats", probe_stats],
-                               args.timeout)
+                rc, text = (1, "") if args.compare_integrator else run(
+                    base + ["--spp", "1", "-o", os.path.join(out, tag + "_auto_1.exr"), "--stats", probe_stats], timeout)
                 # (The statistics name the estimator: a `direct` file runs as "path" with its own
                 # parameters, which --integrator path would drop.)
                 auto, volumetric = None, False
@@ -188,10 +228,10 @@ def main():
                     forced, chosen = True, args.compare_integrator
                 else:
                     chosen = ("volpath" if volumetric else "path") if forced else None
-                for seed in range(1, args.seeds + 1):
-                    img = os.path.join(out, "%s_path_s%d.exr" % (tag, seed))
+                for seed in range(first, first + args.seeds):
+                    img = os.path.join(out, "%s_%s_s%d.exr" % (tag, chosen or "own", seed))
                     flags = ["--spp", str(args.spp), "--seed", str(seed), "-o", img]
-                    rc, text = run(base + (["--integrator", chosen] if forced else []) + flags, args.timeout)
+                    rc, text = run(base + (["--integrator", chosen] if forced else []) + flags, timeout)
                     imgs.append(img if rc == 0 else None)
                 row["compare_integrator"] = chosen if forced else "file's (%s)" % auto
                 if all(imgs):

@@ -26,6 +26,12 @@ const std::vector<IntegratorEntry> kEntries = {
     {"volpath", false, true, readPathParams, makeDefaultPathIntegrator},
     {"volpathmis", false, true, readPathParams, makeDefaultPathIntegrator},
     {"direct", false, false, readDirectParams, makeDirectIntegrator},
+    // Mitsuba's differentiable integrators, rendered as their primal image (scene/integrator_params.h).
+    {"prb", false, true, readPrbParams, makeDefaultPathIntegrator},
+    {"prb_basic", false, true, readPrbParams, makeDefaultPathIntegrator},
+    {"prb_projective", false, true, readProjectivePrbParams, makeDefaultPathIntegrator},
+    {"prbvolpath", false, true, readPrbParams, makeDefaultPathIntegrator},
+    {"direct_projective", false, false, readDirectProjectiveParams, makeDefaultPathIntegrator},
     {"rcache", true, false, readRcacheParamsInto, makeRcacheIntegrator},
 };
 

@@ -114,14 +114,24 @@ CacheEngine::CacheEngine(const RenderContext& ctx, ShBackend& backend, const Rca
   bool anyCached = false;
   for (Technique t : planTech_) anyCached |= isCached(t);
   const bool split = anyCached && !params.tlMode;
-  envSplit_ = std::make_unique<LightSplit>(ctx.scene, split && params.envCache, params.envVariance,
-                                           split && params.areaCache);
-  if (envSplit_->active())
-    residualCtx_ = std::make_unique<RenderContext>(RenderContext{ctx.scene, ctx.accel, envSplit_->residualLights(),
-                                                                 ctx.options, ctx.cancel, ctx.progress});
+  splitEnvironment_ = split && params.envCache;
+  splitArea_ = split && params.areaCache;
+}
+
+// Built on first use, not with the engine: the environment's threshold costs several path-traced
+// 256² frames on a large envmap, which a render the pilot path traces must not pay.
+const LightSplit& CacheEngine::lightSplit() const {
+  std::call_once(splitBuilt_, [this] {
+    envSplit_ = std::make_unique<LightSplit>(ctx_.scene, splitEnvironment_, params_.envVariance, splitArea_);
+    if (envSplit_->active())
+      residualCtx_ = std::make_unique<RenderContext>(RenderContext{
+          ctx_.scene, ctx_.accel, envSplit_->residualLights(), ctx_.options, ctx_.cancel, ctx_.progress});
+  });
+  return *envSplit_;
 }
 
 const RenderContext& CacheEngine::directLightContext(const ShadePoint& sp) const {
+  lightSplit();
   return residualCtx_ && hasIndirect(sp) && isCached(technique(sp)) ? *residualCtx_ : ctx_;
 }
 
@@ -508,13 +518,14 @@ void CacheEngine::traceRecordRays(const std::vector<ShadePoint>& cands, ProjectB
   }
   rayBatch.radiance.resize(total * 3);
   rayBatch.distance.resize(total);
-  const bool carriesEnvironment = envSplit_->active();
+  const LightSplit& split = lightSplit();
+  const bool carriesEnvironment = split.active();
   parallelFor(total, 16384, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
       // An escaping ray brings the environment's cached part, a ray that hits a cached area
       // emitter its emission (the rest is the direct light of the points that use this record).
       if (carriesEnvironment)
-        L[i] += hits[i].valid() ? envSplit_->cachedEmission(hits[i], rays[i].d) : envSplit_->cached(rays[i].d);
+        L[i] += hits[i].valid() ? split.cachedEmission(hits[i], rays[i].d) : split.cached(rays[i].d);
       for (int c = 0; c < 3; ++c) rayBatch.radiance[3 * i + c] = L[i][c];
       rayBatch.distance[i] = hits[i].valid() ? hits[i].t : 0.0f;
     }

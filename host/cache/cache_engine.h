@@ -22,6 +22,7 @@
 #include <atomic>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -108,7 +109,7 @@ class CacheEngine {
   // The lights sp's direct light samples: the residual ones where its indirect light comes from
   // records that carry the cached environment, else the scene's.
   const RenderContext& directLightContext(const ShadePoint& sp) const;
-  const LightSplit& lightSplit() const { return *envSplit_; }
+  const LightSplit& lightSplit() const;
   int maxDepth() const { return maxDepth_; }
 
   std::map<CacheKey, std::unique_ptr<RadianceCache>>& caches() { return caches_; }
@@ -137,8 +138,10 @@ class CacheEngine {
   bool lobeSplitOn_ = true;     // setLobeSplit
   std::vector<bool> twoSided_;
   std::map<CacheKey, std::unique_ptr<RadianceCache>> caches_;
-  std::unique_ptr<LightSplit> envSplit_;
-  std::unique_ptr<RenderContext> residualCtx_;  // ctx_ with envSplit_'s residual lights
+  bool splitEnvironment_ = false, splitArea_ = false;  // what the light split is to take into records
+  mutable std::once_flag splitBuilt_;
+  mutable std::unique_ptr<LightSplit> envSplit_;  // lightSplit(), built on first use
+  mutable std::unique_ptr<RenderContext> residualCtx_;  // ctx_ with envSplit_'s residual lights
   EngineStats stats_;
   std::vector<int> recordPixels_;
   uint64_t recordCounter_ = 0;

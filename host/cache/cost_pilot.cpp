@@ -33,6 +33,8 @@ constexpr int kMaxPilotSpp = 16, kMinPilotSpp = 2;
 // Salts of the pilot renders' seeds (distinct from the image's).
 constexpr uint64_t kSaltCostPilot = 0xC057;
 constexpr double kFirstCandidateCost = 4.0;
+constexpr const char* kNoCandidateFits =
+    "no candidate's pilot fits cost_pilot_share of the path-traced render: the fill's predicted payoff decides";
 
 // The image's scene without its geometry (the pilot renders go through the image's Accel; only
 // bounds, which the caller passes, read geometry from the scene), at the pilot's film.
@@ -241,8 +243,9 @@ std::string CostPilotReport::json() const {
 void reportCostPilot(const CostPilotReport& report, RenderStats& stats) {
   if (report.reason.empty()) return;
   stats.setText("cost_pilot", report.reason);
-  if (!report.ran) return;
+  if (!report.ran && report.skipped.empty()) return;
   stats.setJson("cost_pilot_candidates", report.json());
+  if (!report.ran) return;
   stats.set("cost_pilot_target_relmse", report.choice.targetError);
   stats.set("cost_pilot_s", report.seconds);
   stats.setText("cost_pilot_film", std::to_string(report.pilotWidth) + "x" + std::to_string(report.pilotHeight) + ", " +
@@ -272,6 +275,16 @@ CostPilotReport runCostPilot(const CostPilotInputs& in) {
   report.pilotHeight = h;
   report.pilotSpp = spp;
   const double toImage = pixels / (double(w) * double(h));  // seconds scale with pixels
+  // The first candidate is expected to cost kFirstCandidateCost × the path tracer's two pilot
+  // images, and the budget is cost_pilot_share of the path-traced render, those images' seconds
+  // × toImage·spp / (2·pilot spp) (below): their seconds cancel, so where no candidate could be
+  // tried that is known before anything is rendered, and the pilot stops here.
+  if (kFirstCandidateCost > in.params.costPilotShare * toImage * in.spp / (2.0 * spp)) {
+    report.skipped = in.rcacheCandidates;
+    report.reason = kNoCandidateFits;
+    report.seconds = secondsSince(start);
+    return report;
+  }
 
   Pilot pilot(in, w, h, spp), coarser(in, std::max(4, w / 2), std::max(4, h / 2), spp);
   auto seed = [&](uint64_t k) { return hashMix(in.seed, kSaltCostPilot, k); };
@@ -331,7 +344,7 @@ CostPilotReport runCostPilot(const CostPilotInputs& in) {
   report.choice = chooseByCost(std::move(est), in.spp);
   report.ran = report.choice.chosen >= 0;
   if (rc.empty()) {
-    report.reason = "no candidate's pilot fits cost_pilot_share of the path-traced render: the share pilot decides";
+    report.reason = kNoCandidateFits;
     report.seconds = secondsSince(start);
     return report;
   }

@@ -15,7 +15,8 @@
 //      from a third fill at a quarter of the pilot's pixels; t the seconds per sample per pixel,
 //      scaled by the ratio of the image's pixels to the pilot's.
 // The pilot itself is held to 5 % of the path tracer's predicted render time: a candidate whose
-// pilot would not fit is not tried (and not chosen), so a short render is path traced.
+// pilot would not fit is not tried (and not chosen); where none is tried, the caller asks
+// cache/fill_payoff.h whether the fill can pay at all.
 // The target is the path tracer's error at the user's spp N, E* = V_path / N; a candidate needs
 // N_c = V_c / (E* − B_c) samples per pixel to reach it (none when B_c ≥ E*) and F_c + t_c·N_c
 // seconds. The fastest is chosen; the path tracer costs t_path·N. Assumed, not measured: relMSE
@@ -77,7 +78,9 @@ struct CostPilotReport {
   CostChoice choice;
   int pilotWidth = 0, pilotHeight = 0, pilotSpp = 0;
   double seconds = 0.0;  // the pilot's own cost
-  std::vector<CandidateKind> skipped;  // not tried: their pilot would not fit its budget
+  // Not tried: their pilot would not fit its budget (all of them, with ran false, where that was
+  // known before the path tracer's pilot images).
+  std::vector<CandidateKind> skipped;
   std::string reason;    // why it did not run, or the decision
   std::string json() const;  // the candidates' estimates, for --stats
 };

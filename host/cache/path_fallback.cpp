@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "cache/record_coherence.h"
 #include "cache/rng_salts.h"
 #include "core/parallel.h"
 #include "core/rng.h"
@@ -80,7 +81,7 @@ FallbackDecision decideFallback(const RcacheRun& run) {
   std::vector<Primary> prim;
   run.primaries.trace(filmPos, pixel, seeds, prim);
   const CacheEngine& engine = run.engine;
-  std::vector<char> hit(prim.size(), 0);
+  std::vector<char> hit(prim.size(), 0), ownCached(prim.size(), 0);
   std::vector<float> serves(prim.size(), 0.0f), splitServes(prim.size(), 0.0f);
   parallelFor(prim.size(), 64, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
@@ -90,6 +91,7 @@ FallbackDecision decideFallback(const RcacheRun& run) {
       Rng rng(sp.seed, 0);
       const ServedShare own = servedShare(run, sp, rng);
       if (own.share > 0.0f) {
+        ownCached[i] = 1;
         serves[i] = own.share;
         if (own.lobeSplit) splitServes[i] = own.share;
         continue;
@@ -112,6 +114,7 @@ FallbackDecision decideFallback(const RcacheRun& run) {
   size_t hits = 0;
   double servedSum = 0.0, splitSum = 0.0;
   for (size_t i = 0; i < prim.size(); ++i) hits += hit[i], servedSum += serves[i], splitSum += splitServes[i];
+  d.gridPoints = prim.size();
   d.pilotPoints = hits;
   if (hits == 0) {
     d.reason = "nothing hit";
@@ -120,13 +123,47 @@ FallbackDecision decideFallback(const RcacheRun& run) {
   d.servedShare = servedSum / double(hits);
   d.lobeSplitShare = splitSum / double(hits);
   d.pathTrace = d.servedShare < run.params.fallbackShare;
-  char buf[200];
-  std::snprintf(buf, sizeof(buf),
-                "%s: the cache would serve %.1f %% of %zu pilot points (%.1f %% through lobe splits; threshold %.0f %%)",
-                d.pathTrace ? "path traced" : "cached", 100.0 * d.servedShare, hits, 100.0 * d.lobeSplitShare,
-                100.0 * run.params.fallbackShare);
+  char buf[400];
+  const int n = std::snprintf(buf, sizeof(buf),
+                              "%s: the cache would serve %.1f %% of %zu pilot points "
+                              "(%.1f %% through lobe splits; threshold %.0f %%)",
+                              d.pathTrace ? "path traced" : "cached", 100.0 * d.servedShare, hits,
+                              100.0 * d.lobeSplitShare, 100.0 * run.params.fallbackShare);
+  if (d.pathTrace) {
+    d.reason = buf;
+    return d;
+  }
+  // Served, but can a record serve more than its own pixel (cache/record_coherence.h)?
+  const RecordCoherence coherence = measureRecordCoherence(run, filmPos, seeds, prim, ownCached);
+  d.coherencePoints = coherence.points;
+  d.neighbourOffsetPx = coherence.offsetPx;
+  d.neighbourServedShare = coherence.share();
+  d.neighbourServedBound = coherence.upperBound();
+  if (coherence.tooIncoherent()) {
+    d.pathTrace = true;
+    std::snprintf(buf, sizeof(buf),
+                  "path traced: a floor record would serve the point %.2f px away at %.1f %% of %zu pilot points "
+                  "(at most %.1f %%; threshold %.1f %%) though the cache would serve %.1f %% of %zu",
+                  coherence.offsetPx, 100.0 * d.neighbourServedShare, coherence.points,
+                  100.0 * d.neighbourServedBound, 100.0 * minNeighbourServed(), 100.0 * d.servedShare, hits);
+  } else if (coherence.points > 0 && n > 0 && size_t(n) < sizeof(buf)) {
+    std::snprintf(buf + n, sizeof(buf) - size_t(n),
+                  "; a floor record serves its neighbour %.2f px away at %.1f %% of %zu", coherence.offsetPx,
+                  100.0 * d.neighbourServedShare, coherence.points);
+  }
   d.reason = buf;
   return d;
+}
+
+void reportFallback(const FallbackDecision& d, RenderStats& stats) {
+  stats.setText("fallback", d.reason);
+  if (d.pilotPoints == 0) return;
+  stats.set("pilot_served_share", d.servedShare);
+  stats.set("pilot_lobe_split_share", d.lobeSplitShare);
+  if (d.coherencePoints == 0) return;
+  stats.set("pilot_neighbour_served_share", d.neighbourServedShare);
+  stats.set("pilot_neighbour_served_bound", d.neighbourServedBound);
+  stats.set("pilot_coherence_points", double(d.coherencePoints));
 }
 
 }  // namespace rc

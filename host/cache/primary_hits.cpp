@@ -2,12 +2,14 @@
 
 #include "core/parallel.h"
 #include "render/direct_light.h"
+#include "render/hidden_emitters.h"
 #include "render/light_sampler.h"
 #include "scene/integrator_params.h"
 
 namespace rc {
 
-Primary PrimaryHits::of(const Vec2& filmPos, int pixel, uint64_t sampleSeed, const Ray& ray, const Hit& hit) const {
+Primary PrimaryHits::of(const Vec2& filmPos, int pixel, uint64_t sampleSeed, const Ray& ray, const Hit& cameraHit) const {
+  const Hit hit = hideEmitters_ ? behindAreaEmitters(ctx_, ray, cameraHit) : cameraHit;
   Primary p;
   p.filmPos = filmPos;
   p.sp = engine_.shadePointOf(hit, ray.d, 1, 0, sampleSeed);

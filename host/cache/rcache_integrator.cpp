@@ -11,6 +11,7 @@
 #include "cache/cache_fill.h"
 #include "cache/cache_params.h"
 #include "cache/cost_pilot.h"
+#include "cache/fill_payoff.h"
 #include "cache/final_pass.h"
 #include "cache/final_pass_memory.h"
 #include "cache/path_fallback.h"
@@ -100,6 +101,7 @@ class RcachePasses final : public PassRender {
   std::unique_ptr<RcacheRun> run_;
   FallbackDecision fallback_;
   CostPilotReport cost_;
+  FillPayoff payoff_;  // where the cost pilot could afford no cache candidate
   std::unique_ptr<Integrator> pathIntegrator_;  // the pilot chose path tracing: it renders the passes
   std::unique_ptr<PassRender> pathPasses_;
   size_t recordsLoaded_ = 0;
@@ -169,7 +171,18 @@ void RcachePasses::chooseTechnique(const Vec3& lo, const Vec3& hi) {
   if (kinds.empty()) return;
   cost_ = runCostPilot({ctx_, settings_, params_, tables_, backend_, lo, hi, spp_, run_->seed, run_->lowDiscrepancy,
                         kinds});
-  if (!cost_.ran || cost_.choice.candidates.size() < 2) return;  // no variant fit: the default stands
+  if (!cost_.skipped.empty() && cost_.choice.candidates.size() < 2) {
+    // No variant's pilot fit its budget: whether the fill can pay at all, predicted (cache/fill_payoff.h).
+    if (fallback_.pathTrace || fallback_.coherencePoints == 0) return;
+    payoff_ = measureFillPayoff(*run_, settings_, fallback_);
+    if (!payoff_.pays) {
+      fallback_.pathTrace = true;
+      fallback_.reason = payoff_.reason + " (" + fallback_.reason + ")";
+    }
+    return;
+  }
+  // Not run (small image, crop window) or interrupted: the share pilot's verdict stands.
+  if (!cost_.ran || cost_.choice.candidates.size() < 2) return;
   const CandidateKind chosen = cost_.choice.candidates[static_cast<size_t>(cost_.choice.chosen)].kind;
   if (chosen == CandidateKind::RcacheLobeSplit && params_.lobeSplit == Mode::Auto) {
     fallback_ = withSplit;
@@ -204,10 +217,9 @@ bool RcachePasses::addPass(Film& film, int firstSample) {
 Image RcachePasses::finish(const Film& film, int passes, bool stopped, RenderStats& stats) {
   if (pathPasses_) {
     Image img = pathPasses_->finish(film, passes, stopped, stats);
-    stats.setText("fallback", fallback_.reason);
-    stats.set("pilot_served_share", fallback_.servedShare);
-    stats.set("pilot_lobe_split_share", fallback_.lobeSplitShare);
+    reportFallback(fallback_, stats);
     reportCostPilot(cost_, stats);
+    reportFillPayoff(payoff_, stats);
     return img;
   }
   Image img = film.develop();
@@ -224,10 +236,9 @@ Image RcachePasses::finish(const Film& film, int passes, bool stopped, RenderSta
   }
   reportRcacheStats(*run_, {secondsSince(start_), tablesS_, finalS_, fill_, totals_, recordsLoaded_, stopped},
                     stats);
-  stats.setText("fallback", fallback_.reason);
-  if (fallback_.pilotPoints > 0) stats.set("pilot_served_share", fallback_.servedShare);
-  if (fallback_.pilotPoints > 0) stats.set("pilot_lobe_split_share", fallback_.lobeSplitShare);
+  reportFallback(fallback_, stats);
   reportCostPilot(cost_, stats);
+  reportFillPayoff(payoff_, stats);
   if (recordsLoaded_ > 0) stats.set("records_too_coarse", double(recordsSkipped_));
   return img;
 }

@@ -59,14 +59,16 @@
 //                       cached points no longer light-sample those (off: measured not to pay,
 //                       bench/RESULTS.md "Environment light in the cache")
 //   fallback     true   a pilot decides before the fill whether the cache can pay; if it would
-//                       serve less than fallback_share of the image, the image is path traced
+//                       serve less than fallback_share of the image, or its records could not
+//                       serve their neighbours (cache/record_coherence.h), the image is path traced
 //   fallback_share 0.25 that threshold (cache/path_fallback.h says why 0.25)
 //   cost_pilot   false  where the share pilot caches, a cost pilot at ~1/64 of the pixels chooses
 //                       the fastest of path tracer, rcache and rcache + lobe split to the path
 //                       tracer's error at the requested spp (cache/cost_pilot.h); off by default:
 //                       a choice from timings is not reproducible run to run
 //   cost_pilot_share 0.05 the cost pilot's budget: a candidate is tried only while the pilot's time
-//                       stays below this share of the path tracer's predicted render
+//                       stays below this share of the path tracer's predicted render; with none
+//                       tried, the fill's predicted payoff decides (cache/fill_payoff.h)
 //   lobe_split   auto   layered materials' base from records, coat sampled (Technique::LobeSplit):
 //                       auto = the cost pilot may choose it (off where it does not
 //                       run or tries no variant) | true | false

@@ -20,6 +20,10 @@ constexpr uint64_t kSaltRecordLightSequence = 0x1D5EED;
 constexpr uint64_t kSaltCandidateOrder = 0xA11CE;
 // The pilot that decides whether the cache can pay (path_fallback.h): per pilot pixel.
 constexpr uint64_t kSaltPilot = 0x9117;
+// The direction of a pilot point's neighbour in the coherence test (record_coherence.h).
+constexpr uint64_t kSaltPilotNeighbour = 0x9118;
+// The path samples at which the fill's payoff is measured (fill_payoff.h): per point.
+constexpr uint64_t kSaltFillPayoff = 0x9119;
 // The α node of a point of a material tabulated over α (MaterialPlan::tableAt).
 constexpr uint64_t kSaltAlphaNode = 0xA1FA;
 // Rng stream ids: the direct light a fill point's Weber threshold is relative to, the stratified

@@ -22,7 +22,7 @@ ImageError compareImages(const std::vector<Color>& test, const std::vector<Color
     for (int c = 0; c < 3; ++c) {
       const double x = test[i][c], r = reference[i][c], d = x - r;
       se += d * d;
-      rel += d * d / (r * r + 0.01);
+      rel += relMseTerm(d, r);
       e.maxAbs = std::max(e.maxAbs, std::fabs(d));
       ++n;
     }
@@ -41,7 +41,7 @@ std::vector<float> relativeErrorMap(const std::vector<Color>& test, const std::v
     double acc = 0;
     for (int c = 0; c < 3; ++c) {
       const double d = double(test[i][c]) - reference[i][c];
-      acc += d * d / (double(reference[i][c]) * reference[i][c] + 0.01);
+      acc += relMseTerm(d, reference[i][c]);
     }
     out[i] = std::isfinite(acc) ? static_cast<float>(acc / 3.0) : INFINITY;
   }

@@ -7,6 +7,9 @@
 
 namespace rc {
 
+// One pixel channel's term of relMSE, (x − r)² / (r² + 0.01) with diff = x − r.
+inline double relMseTerm(double diff, double reference) { return diff * diff / (reference * reference + 0.01); }
+
 struct ImageError {
   double rmse = 0, relmse = 0, maxAbs = 0;
   size_t nonFinite = 0;  // pixels of the test image that are NaN/Inf (counted, excluded)

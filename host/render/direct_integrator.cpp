@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "geometry/shading_frame.h"
 #include "render/direct_light.h"
+#include "render/hidden_emitters.h"
 #include "render/light_sampler.h"
 #include "render/path_integrator.h"
 
@@ -25,7 +26,8 @@ void readDirectParams(ParamReader& in, IntegratorSettings& s) {
 Color directRadiance(const RenderContext& ctx, const IntegratorSettings& settings, const Ray& ray, Rng& rng,
                      const Hit* cameraHit) {
   const Scene& scene = ctx.scene;
-  const Hit hit = cameraHit ? *cameraHit : ctx.accel.intersect(ray);
+  Hit hit = cameraHit ? *cameraHit : ctx.accel.intersect(ray);
+  if (settings.hideEmitters) hit = behindAreaEmitters(ctx, ray, hit);
 
   // ---- Visible emitters ----
   Color L(0.0f);

@@ -10,7 +10,8 @@
 //   shading_samples  1  sets both counts (not together with either of them)
 //   emitter_samples  1  light samples per pixel sample (≥ 0)
 //   bsdf_samples     1  BSDF samples per pixel sample (≥ 0)
-//   hide_emitters false directly visible emitters render black
+//   hide_emitters false camera rays pass area emitters to what lies behind, an escaping camera ray
+//                       sees no environment (render/hidden_emitters.h)
 //
 // One difference from Mitsuba 3.9.1, kept on purpose: Mitsuba weights a sample of a delta light
 // (point, spot, directional) 1 instead of 1/emitter_samples, so its direct image of such a light

@@ -82,19 +82,22 @@ Color directLightCheapest(const RenderContext& ctx, const Hit& hit, const Frame&
 
 Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorld, const Hit& next, float bsdfPdf,
                  bool delta, int lightSamples, int bsdfSamples) {
-  const float n = static_cast<float>(lightSamples);
-  bsdfPdf *= static_cast<float>(bsdfSamples);
-  if (next.valid()) {
-    const Color Le = emitted(ctx.lights.emitters(), next, -dirWorld);
-    if (maxComponent(Le) <= 0.0f) return Color(0.0f);
-    if (delta) return Le;
-    return Le * powerHeuristic(bsdfPdf, n * ctx.lights.pdf(next, from));
+  if (!next.valid()) {
+    if (!ctx.lights.hasEnvironment()) return Color(0.0f);
+    return environmentMis(ctx.lights.environmentLookup(dirWorld), bsdfPdf, delta, lightSamples, bsdfSamples);
   }
-  if (!ctx.lights.hasEnvironment()) return Color(0.0f);
-  const LightSampler::EnvironmentLookup env = ctx.lights.environmentLookup(dirWorld);
+  const Color Le = emitted(ctx.lights.emitters(), next, -dirWorld);
+  if (maxComponent(Le) <= 0.0f) return Color(0.0f);
+  if (delta) return Le;
+  return Le * powerHeuristic(static_cast<float>(bsdfSamples) * bsdfPdf,
+                             static_cast<float>(lightSamples) * ctx.lights.pdf(next, from));
+}
+
+Color environmentMis(const LightSampler::EnvironmentLookup& env, float bsdfPdf, bool delta, int lightSamples,
+                     int bsdfSamples) {
   if (maxComponent(env.radiance) <= 0.0f) return Color(0.0f);
   if (delta) return env.radiance;
-  return env.radiance * powerHeuristic(bsdfPdf, n * env.pdf);
+  return env.radiance * powerHeuristic(static_cast<float>(bsdfSamples) * bsdfPdf, static_cast<float>(lightSamples) * env.pdf);
 }
 
 Color lightStrategyMis(const RenderContext& ctx, const Hit& hit, const Frame& frame, const Vec3& woLocal,

@@ -18,6 +18,7 @@
 #include "core/rng.h"
 #include "geometry/accel.h"
 #include "render/integrator.h"
+#include "render/light_sampler.h"
 
 namespace rc {
 
@@ -44,6 +45,10 @@ inline float powerHeuristic(float pdfA, float pdfB) {
 // lightSamples light samples; either count may be 0, which leaves the other technique weight 1).
 Color emitterMis(const RenderContext& ctx, const Vec3& from, const Vec3& dirWorld, const Hit& next,
                  float bsdfPdf, bool delta, int lightSamples = 1, int bsdfSamples = 1);
+// emitterMis of a ray that escaped, given what the environment sends along it (env, from
+// LightSampler::environmentLookup or environmentLookups).
+Color environmentMis(const LightSampler::EnvironmentLookup& env, float bsdfPdf, bool delta, int lightSamples = 1,
+                     int bsdfSamples = 1);
 
 // The light-sampling half of directLight: `lightSamples` light samples (one shadow ray each)
 // averaged, MIS-weighted (power heuristic on lightSamples·pdf_light vs bsdfSamples·pdf_bsdf, Veach's

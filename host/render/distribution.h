@@ -3,6 +3,7 @@
 // emitter selection, triangle selection and (as PiecewiseConstant2D) the envmap's 2-D
 // (marginal × conditional) sampling.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -102,6 +103,18 @@ class Distribution1D {
   double total_ = 0.0;
   bool uniform_ = false;
 };
+
+// x ∈ [0, 1) with density ∝ (1 − x)·a + x·b (a, b ≥ 0, not both 0): the inverse of the quadratic CDF
+// in the form that loses no precision when a ≈ b or when a or b is 0. Two of these sample a bilinear
+// patch (the envmap's density within one cell: the row's linear marginal, then the column given it).
+inline float sampleLinear(float u, float a, float b) {
+  if (!(a + b > 0.0f)) return u;
+  if (u == 0.0f) return 0.0f;  // also where a = 0: the form below would be 0/0
+  const float x = u * (a + b) / (a + std::sqrt((1.0f - u) * a * a + u * b * b));
+  return std::min(x, 0.99999994f);
+}
+// Density of sampleLinear's x.
+inline float linearPdf(float x, float a, float b) { return a + b > 0.0f ? 2.0f * ((1.0f - x) * a + x * b) / (a + b) : 1.0f; }
 
 // A 2-D piecewise-constant distribution over rows × cols cells (weights row-major, rows, cols ≥ 1):
 // a row from the marginal, then a column from that row's conditional. The conditionals' tables are

@@ -6,9 +6,14 @@
 //     u = (x + 0.5) / W (periodic in φ) and v = y / (H − 1) (the first and last rows lie on the
 //     poles, clamped in θ) — so a sharp change between two rows is a ramp over one row spacing;
 //   images smaller than 2×3 are padded by replicating the last column / row (Bitmap::pad_to).
-// Importance sampling is piecewise constant over the cells between texel centres (W cells in φ,
-// H − 1 in θ), each weighted by the exact integral of the bilinear luminance times the mean sinθ
-// of its band; pdf() evaluates that same density, so light sampling and MIS stay consistent.
+// Importance sampling follows Mitsuba's warp (a Hierarchical2D over luminance × sinθ at the texel
+// centres): the density in (u, v) is the bilinear interpolation of d = luminance(texel) · sin(θ_row)
+// between texel centres, normalised. A cell between four texel centres (W cells in φ, H − 1 in θ) is
+// drawn by its exact integral (the mean of its corners' d), then a point within it from the
+// bilinear patch itself (render/distribution.h, sampleLinear). pdf() evaluates that same density, so
+// light sampling and MIS stay consistent; radiance / pdf varies within a cell only through colour
+// and the ratio sinθ / bilinear sinθ, where a piecewise-constant density left the full ramp of a
+// bright texel's bilinear footprint in it.
 //
 // | parameter (XML) | meaning                                      | default  |
 // |-----------------|----------------------------------------------|----------|
@@ -18,14 +23,15 @@
 #include <vector>
 
 #include "core/math.h"
+#include "core/simd_level.h"
 #include "render/distribution.h"
+#include "render/envmap_texels.h"
 
 namespace rc {
 
-// Mitsuba's lat-long mapping of a local direction and its inverse (u, v ∈ [0, 1]); *sinTheta
-// (optional) gets sin(πv).
+// The inverse of Mitsuba's lat-long mapping envUv (render/envmap_texels.h), u, v ∈ [0, 1];
+// *sinTheta (optional) gets sin(πv).
 Vec3 envDirection(float u, float v, float* sinTheta = nullptr);
-Vec2 envUv(const Vec3& dirLocal);
 
 class EnvmapLight {
  public:
@@ -42,6 +48,13 @@ class EnvmapLight {
     float pdf = 0.0f;
   };
   Lookup lookup(const Vec3& dirWorld) const;
+  // lookup() of n world directions (x[k], y[k], z[k]), added to running sums as LightSampler sums
+  // its infinite emitters: radiance[k] += value, pdf[k] += selectProb · density (pdf null: the
+  // density is not needed). The same operations as lookup(), so the same numbers bit for bit; one
+  // pass over arrays that the compiler vectorises (envmap_light_batch.cpp), run with the widest
+  // instruction set up to `level` that the CPU has.
+  void lookupAdd(const float* x, const float* y, const float* z, size_t n, float selectProb, float* r, float* g,
+                 float* b, float* pdf, SimdLevel level = SimdLevel::Avx512) const;
   // A world direction drawn from the luminance-weighted density, with the radiance and density
   // there (pdf 0 when the map is black: then there is nothing to sample).
   struct Sample {
@@ -54,17 +67,18 @@ class EnvmapLight {
 
  private:
   int width_ = 0, height_ = 0;  // after padding
-  std::vector<Color> texels_;    // scaled radiance, row-major, top row first
+  // Per texel (row-major, top row first): scaled radiance in xyz, the sampling weight
+  // luminance · sin(θ_row) in w — one bilinear interpolation gives both.
+  std::vector<Vec4> texels_;
   Mat3 toWorld_{1.0f}, toLocal_{1.0f};
   PiecewiseConstant2D cells_;  // the W × (H − 1) cells between texel centres: bands, then cells within one
-  std::vector<double> cellPdfUv_;  // density in (u, v) ∈ [0,1]² per cell
+  // Solid-angle density = interpolated weight × pdfScale_ / sinθ: W·(H − 1) / Σ cell means / 2π².
+  float pdfScale_ = 0.0f;
   double meanLuminance_ = 0.0;
 
-  Color texel(int x, int y) const { return texels_[static_cast<size_t>(y) * width_ + x]; }
-  Vec3 toLocal(const Vec3& dirWorld) const { return glm::normalize(toLocal_ * dirWorld); }
-  Color bilinear(const Vec2& uv) const;
-  float pdfLocal(const Vec3& dLocal, const Vec2& uv) const;
-  size_t cellOf(const Vec2& uv) const;
+  const Vec4& texel(int x, int y) const { return texels_[static_cast<size_t>(y) * width_ + x]; }
+  static_assert(sizeof(Vec4) == 4 * sizeof(float), "tables() reads texels_ as an array of floats");
+  EnvmapTexels tables() const { return EnvmapTexels{&texels_.data()->x, pdfScale_, width_, height_, toLocal_}; }
 };
 
 }  // namespace rc

@@ -53,13 +53,16 @@ struct LightSampler::Impl {
   // Radiance and density (selection included) of all infinite emitters along dir, summed in entry
   // order; entry `known` (an envmap just sampled toward dir) contributes *knownValue instead of
   // being looked up again.
+  // A constant environment's light-sampling density (uniform over the sphere, times its selection).
+  float constantPdf(int k) const { return selectProb(k) * (1.0f / (4.0f * kPi)); }
+
   EnvironmentLookup environmentAt(const Vec3& dir, int known = -1, const EnvmapLight::Lookup* knownValue = nullptr) const {
     EnvironmentLookup out;
     for (int k : infinite) {
       const Entry& e = entries[k];
       if (e.type == EmitterType::Constant) {
         out.radiance += emitters[e.emitter].radiance;
-        out.pdf += selectProb(k) * (1.0f / (4.0f * kPi));
+        out.pdf += constantPdf(k);
       } else {
         const EnvmapLight::Lookup v = k == known ? *knownValue : e.envmap->lookup(dir);
         out.radiance += v.radiance;
@@ -383,6 +386,36 @@ Color LightSampler::environment(const Vec3& dir) const {
 float LightSampler::environmentPdf(const Vec3& dir) const { return impl_->environmentAt(dir).pdf; }
 LightSampler::EnvironmentLookup LightSampler::environmentLookup(const Vec3& dir) const {
   return impl_->environmentAt(dir);
+}
+
+void LightSampler::EnvironmentWave::fit(size_t n) {
+  for (std::vector<float>* v : {&x, &y, &z, &r, &g, &b, &pdf})
+    if (v->size() < n) v->resize(n);
+}
+
+void LightSampler::environmentLookups(EnvironmentWave& w, size_t n, bool withPdf) const {
+  // environmentAt's sums, in its order of entries, one entry at a time over all directions.
+  const Impl& im = *impl_;
+  std::fill_n(w.r.begin(), n, 0.0f);
+  std::fill_n(w.g.begin(), n, 0.0f);
+  std::fill_n(w.b.begin(), n, 0.0f);
+  std::fill_n(w.pdf.begin(), n, 0.0f);
+  for (int k : im.infinite) {
+    const Entry& e = im.entries[k];
+    if (e.type == EmitterType::Envmap) {
+      e.envmap->lookupAdd(w.x.data(), w.y.data(), w.z.data(), n, im.selectProb(k), w.r.data(), w.g.data(), w.b.data(),
+                          withPdf ? w.pdf.data() : nullptr);
+      continue;
+    }
+    const Color radiance = im.emitters[e.emitter].radiance;
+    const float pdf = im.constantPdf(k);
+    for (size_t j = 0; j < n; ++j) {
+      w.r[j] += radiance.r;
+      w.g[j] += radiance.g;
+      w.b[j] += radiance.b;
+      if (withPdf) w.pdf[j] += pdf;
+    }
+  }
 }
 
 }  // namespace rc

@@ -51,6 +51,17 @@ class LightSampler {
     float pdf = 0.0f;
   };
   EnvironmentLookup environmentLookup(const Vec3& dir) const;
+  // Directions and what the environment sends along them, as arrays (one entry per escaped ray of
+  // a wave), so that the envmaps are looked up in one vectorised pass (EnvmapLight::lookupAdd).
+  struct EnvironmentWave {
+    std::vector<float> x, y, z;       // world directions (unit)
+    std::vector<float> r, g, b, pdf;  // radiance and density, as environmentLookup gives them
+    void fit(size_t n);               // every array holds at least n entries (kept between waves)
+    EnvironmentLookup at(size_t k) const { return EnvironmentLookup{Color(r[k], g[k], b[k]), pdf[k]}; }
+  };
+  // environmentLookup() of the first n directions of `wave`, bit for bit (the densities only when
+  // withPdf, else left 0: environment() alone).
+  void environmentLookups(EnvironmentWave& wave, size_t n, bool withPdf) const;
   bool hasEnvironment() const;
   // An upper bound of the solid angle the emitters subtend from p (the area emitters' bounding
   // spheres; 4π with an infinite emitter, from inside a bound, or with more than 16 emitters). Lets a caller skip the BSDF

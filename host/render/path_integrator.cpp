@@ -9,6 +9,7 @@
 #include "render/camera.h"
 #include "render/direct_light.h"
 #include "render/film.h"
+#include "render/hidden_emitters.h"
 #include "render/light_sampler.h"
 #include "render/path_wavefront.h"
 #include "render/render_loop.h"
@@ -28,7 +29,8 @@ Color pathRadiance(const RenderContext& ctx, const IntegratorSettings& settings,
   float prevPdf = 0.0f;
   bool prevDelta = true;
   for (int depth = 0;; ++depth) {
-    const Hit hit = depth == 0 && cameraHit ? *cameraHit : ctx.accel.intersect(ray);
+    Hit hit = depth == 0 && cameraHit ? *cameraHit : ctx.accel.intersect(ray);
+    if (depth == 0 && settings.hideEmitters) hit = behindAreaEmitters(ctx, ray, hit);
 
     // Emission found by this segment: full weight for the camera ray, MIS against light sampling after.
     if (depth == 0) {

@@ -4,6 +4,7 @@
 
 #include "geometry/shading_frame.h"
 #include "render/direct_light.h"
+#include "render/hidden_emitters.h"
 #include "render/light_sampler.h"
 
 namespace rc {
@@ -33,6 +34,8 @@ void prepare(PathWave& w, size_t count) {
   fit(w.octants, count);
   fit(w.waveRays, count);
   fit(w.waveHits, count);
+  fit(w.escapedEntry, count);
+  w.escaped.fit(count);
 }
 
 // Writes the ids id(0) … id(n − 1) to out ordered by the octant of their direction dir(id) (a stable
@@ -64,6 +67,26 @@ void startLanes(PathWave& w, const Ray* cameraRays, size_t count) {
   }
 }
 
+// The environment along the bounce's segments that escaped (lane i's in w.escaped at entry
+// w.escapedEntry[i]), looked up in one pass over the wave; nothing when no term would use it.
+void lookUpEscaped(const RenderContext& ctx, const IntegratorSettings& settings, PathWave& w, const Hit* hits,
+                   size_t live, int depth) {
+  if (!ctx.lights.hasEnvironment() || (depth == 0 && settings.hideEmitters)) return;
+  LightSampler::EnvironmentWave& env = w.escaped;
+  size_t n = 0;
+  for (size_t k = 0; k < live; ++k) {
+    const uint32_t i = w.active[k];
+    if (hits[depth == 0 ? i : k].valid()) continue;
+    const Vec3& d = w.rays[i].d;
+    env.x[n] = d.x;
+    env.y[n] = d.y;
+    env.z[n] = d.z;
+    w.escapedEntry[i] = static_cast<uint32_t>(n++);
+  }
+  // The camera rays' term is the radiance alone (LightSampler::environment); later ones weigh it by MIS.
+  ctx.lights.environmentLookups(env, n, depth > 0);
+}
+
 // One bounce's shading, all in pathRadiance's order of draws and additions.
 class BounceShader {
  public:
@@ -74,15 +97,18 @@ class BounceShader {
 
   // Lane i, whose segment w.rays[i] found `hit`: adds the emission the segment found, queues the
   // vertex's shadow ray, and queues the lane for the next bounce unless its path ends here.
-  void shade(uint32_t i, const Hit& hit) {
+  void shade(uint32_t i, const Hit& found) {
     const Ray& ray = w_.rays[i];
+    // Hidden emitters let the camera ray through (render/hidden_emitters.h); `found` stays uncopied otherwise.
+    const Hit& hit = depth_ == 0 && settings_.hideEmitters ? (behind_ = behindAreaEmitters(ctx_, ray, found)) : found;
     Color& throughput = w_.throughput[i];
     // Emission found by this segment: full weight for the camera ray, MIS against light sampling after.
     if (depth_ == 0) {
       if (!settings_.hideEmitters)
-        w_.radiance[i] += throughput * (hit.valid() ? emitted(ctx_.scene, hit, -ray.d) : ctx_.lights.environment(ray.d));
+        w_.radiance[i] += throughput * (hit.valid() ? emitted(ctx_.scene, hit, -ray.d) : escapedEnvironment(i).radiance);
     } else {
-      w_.radiance[i] += throughput * emitterMis(ctx_, w_.prevP[i], ray.d, hit, w_.prevPdf[i], w_.prevDelta[i] != 0);
+      w_.radiance[i] += throughput * (hit.valid() ? emitterMis(ctx_, w_.prevP[i], ray.d, hit, w_.prevPdf[i], w_.prevDelta[i] != 0)
+                                                  : environmentMis(escapedEnvironment(i), w_.prevPdf[i], w_.prevDelta[i] != 0));
     }
     if (!hit.valid()) return;
     // Mitsuba: a vertex may extend the path only while the path has fewer than max_depth segments.
@@ -113,6 +139,14 @@ class BounceShader {
   Rng* rngs_;
   PathWave& w_;
   const int depth_;
+  Hit behind_;  // what a camera ray found behind hidden area emitters (reused: not built per lane)
+
+  // What lookUpEscaped found along lane i's escaped segment (LightSampler::environmentLookup's
+  // numbers; zero without an environment).
+  LightSampler::EnvironmentLookup escapedEnvironment(uint32_t i) const {
+    if (!ctx_.lights.hasEnvironment()) return {};
+    return w_.escaped.at(w_.escapedEntry[i]);
+  }
 
   // BSDF sampling and Russian roulette: true when the path continues along the new w.rays[i].
   bool extend(uint32_t i, const Hit& hit, const Frame& frame, const Vec3& wo, const Bsdf& bsdf, Rng& rng) {
@@ -163,6 +197,7 @@ void pathRadianceBatch(const RenderContext& ctx, const IntegratorSettings& setti
       ctx.accel.intersectBatch(w.waveRays.data(), w.waveHits.data(), live, query);
       hits = w.waveHits.data();
     }
+    lookUpEscaped(ctx, settings, w, hits, live, depth);
     BounceShader shader(ctx, settings, rngs, w, depth);
     for (size_t k = 0; k < live; ++k) shader.shade(w.active[k], hits[depth == 0 ? w.active[k] : k]);
     // Each lane has at most one shadow ray per bounce, added before the next bounce's emission:

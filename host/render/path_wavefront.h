@@ -13,6 +13,7 @@
 
 #include "core/rng.h"
 #include "render/integrator.h"
+#include "render/light_sampler.h"
 
 namespace rc {
 
@@ -34,6 +35,10 @@ struct PathWave {
   std::vector<uint8_t> octants;       // scratch of orderByOctant
   std::vector<Ray> waveRays;  // gathered rays of the active lanes
   std::vector<Hit> waveHits;
+  // This bounce's escaped segments: their directions and the environment along them (looked up in
+  // one vectorised pass), and per lane the entry of its segment.
+  LightSampler::EnvironmentWave escaped;
+  std::vector<uint32_t> escapedEntry;
 };
 
 // Radiance of `count` camera samples: cameraRays[i] with its first hit cameraHits[i] (already

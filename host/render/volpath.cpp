@@ -3,11 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "geometry/shading_frame.h"
 #include "render/direct_light.h"
+#include "render/hidden_emitters.h"
 #include "render/light_sampler.h"
+#include "render/medium_tracking.h"
 #include "render/phase_function.h"
 
 namespace rc {
@@ -38,15 +39,6 @@ int mediumAfter(const Scene& scene, const Hit& hit, const Vec3& dir, int current
   return glm::dot(hit.ng, dir) > 0.0f ? media->exterior : media->interior;
 }
 
-// exp(−σt·d) per channel; a channel without extinction passes whole, also over an infinite distance.
-Color transmittance(const Color& sigmaT, float distance) {
-  Color tr;
-  for (int c = 0; c < 3; ++c) tr[c] = sigmaT[c] > 0.0f ? std::exp(-sigmaT[c] * distance) : 1.0f;
-  return tr;
-}
-
-float mean(const Color& c) { return (c.r + c.g + c.b) / 3.0f; }
-
 // The shadow ray from a point in a medium (no surface to offset from) to a light sample.
 Ray rayToLight(const Vec3& p, const LightSample& ls) {
   Ray r;
@@ -60,7 +52,8 @@ Ray rayToLight(const Vec3& p, const LightSample& ls) {
 }
 
 // Next-event estimation from a scattering point in a medium: one light sample, its phase value
-// and transmittance, MIS-weighted against phase sampling. Consumes 3 numbers.
+// and transmittance, MIS-weighted against phase sampling. Consumes 3 numbers, and in a
+// heterogeneous medium those of the shadow ray's tracking.
 Color mediumLight(const RenderContext& ctx, const Vec3& p, const Vec3& wi, int medium, Rng& rng) {
   const Vec2 u = rng.next2D();
   const float uLight = rng.nextFloat();
@@ -68,7 +61,7 @@ Color mediumLight(const RenderContext& ctx, const Vec3& p, const Vec3& wi, int m
   const std::optional<LightSample> ls = ctx.lights.sample(p, u, uLight);
   if (!ls || !(ls->pdf > 0.0f || ls->delta) || !(maxComponent(ls->radiance) > 0.0f)) return Color(0.0f);
   const float f = phaseValue(ctx.scene.media[medium].phase, wi, ls->wi);
-  const Color tr = shadowTransmittance(ctx, rayToLight(p, *ls), medium);
+  const Color tr = shadowTransmittance(ctx, rayToLight(p, *ls), medium, rng);
   return f * ls->radiance * tr * (ls->delta ? 1.0f : powerHeuristic(ls->pdf, f));
 }
 
@@ -85,15 +78,15 @@ bool sceneUsesMedia(const Scene& scene) {
 
 bool followsMedia(const Scene& scene, const std::string& integrator) {
   const std::string& estimator = integrator == "rcache" ? scene.integrator.type : integrator;
-  return (estimator == "volpath" || estimator == "volpathmis") && sceneUsesMedia(scene);
+  return (estimator == "volpath" || estimator == "volpathmis" || estimator == "prbvolpath") && sceneUsesMedia(scene);
 }
 
-Color shadowTransmittance(const RenderContext& ctx, Ray ray, int medium) {
+Color shadowTransmittance(const RenderContext& ctx, Ray ray, int medium, Rng& rng) {
   const Scene& scene = ctx.scene;
   Color tr(1.0f);
   for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
     const Hit hit = ctx.accel.intersect(ray);
-    if (medium >= 0) tr *= transmittance(scene.media[medium].sigmaT, (hit.valid() ? hit.t : ray.tMax) - ray.tMin);
+    if (medium >= 0) tr *= mediumTransmittance(scene.media[medium], ray, hit.valid() ? hit.t : ray.tMax, rng);
     if (!hit.valid()) return tr;
     const Bsdf* material = materialOf(scene, hit);
     if (!material) return Color(0.0f);
@@ -133,19 +126,16 @@ Color volPathRadiance(const RenderContext& ctx, const IntegratorSettings& settin
     }
     if (depth >= maxDepth) break;
 
-    const Hit hit = ctx.accel.intersect(ray);
+    Hit hit = ctx.accel.intersect(ray);
 
     // ---- Free flight through the medium the ray is in ----
     if (medium >= 0) {
       const Medium& m = scene.media[medium];
-      const float uChannel = rng.nextFloat(), uDistance = rng.nextFloat();
-      const float sigma = m.sigmaT[std::min(static_cast<int>(uChannel * 3.0f), 2)];
-      const float t = sigma > 0.0f ? -std::log1p(-uDistance) / sigma : std::numeric_limits<float>::infinity();
-      if (t < hit.t) {
+      const FreeFlight flight = sampleFreeFlight(m, ray, hit.t, rng);
+      beta *= flight.weight;
+      if (flight.scattered) {
         // ---- Scattering in the medium ----
-        const Vec3 p = ray.o + t * ray.d;
-        const Color tr = transmittance(m.sigmaT, t);
-        beta *= m.sigmaT * m.albedo->eval(p) * tr / mean(m.sigmaT * tr);
+        const Vec3 p = flight.p;
         if (++depth >= maxDepth) break;
         const Vec3 wi = -ray.d;
         if (m.sampleEmitters) L += beta * mediumLight(ctx, p, wi, medium, rng);
@@ -158,12 +148,13 @@ Color volPathRadiance(const RenderContext& ctx, const IntegratorSettings& settin
         lastScatterPdf = ps.pdf;
         continue;
       }
-      // The flight passed the surface (or left for good through a channel without extinction).
-      const Color tr = transmittance(m.sigmaT, hit.t);
-      const float pass = mean(tr);
-      if (!(pass > 0.0f)) break;
-      beta *= tr / pass;
+      // The flight passed the surface (or left for good); nothing passed ends the path.
+      if (!(maxComponent(flight.weight) > 0.0f)) break;
     }
+
+    // A camera ray that reached a hidden area emitter goes on to what lies behind it (Mitsuba's volpath
+    // skips them once the flight has reached the surface).
+    if (depth == 0 && settings.hideEmitters) hit = behindAreaEmitters(ctx, ray, hit);
 
     // ---- Emission found by this segment ----
     if (!(depth == 0 && settings.hideEmitters))
@@ -181,7 +172,7 @@ Color volPathRadiance(const RenderContext& ctx, const IntegratorSettings& settin
     if (depth + 1 < maxDepth)
       if (const std::optional<UnshadowedLight> light = lightSampleUnshadowed(ctx, hit, frame, wo, bsdf, rng, 1))
         L += beta * light->value *
-             shadowTransmittance(ctx, light->shadow, mediumAfter(scene, hit, light->shadow.d, medium));
+             shadowTransmittance(ctx, light->shadow, mediumAfter(scene, hit, light->shadow.d, medium), rng);
 
     // ---- BSDF sampling ----
     const Vec2 u = rng.next2D();

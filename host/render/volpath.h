@@ -13,13 +13,10 @@
 // (emission found afterwards then counts whole, as after a delta lobe); passing it, the path meets
 // the surface. A surface with interior/exterior media switches the path's medium by the side the
 // ray leaves through (the geometric normal: exterior on its side). Shadow rays carry
-// transmittance: exp(−σt·d) through each medium they cross and a null surface's pass-through
-// share (Bsdf::nullTransmission); any other surface blocks them.
-//
-// Where Mitsuba draws distances per colour channel with a ratio of densities, this estimator draws
-// the channel at every flight and weights by the mean density over the channels (the same
-// expectation; no extreme weights when sigma_t differs between channels), and shadow rays take
-// the transmittance in closed form where Mitsuba draws it.
+// transmittance through each medium they cross and a null surface's pass-through share
+// (Bsdf::nullTransmission); any other surface blocks them. Free flights and transmittance in one
+// medium, homogeneous (closed form) or heterogeneous (delta and ratio tracking against the
+// majorant): render/medium_tracking.h.
 #include <string>
 
 #include "core/rng.h"
@@ -40,7 +37,8 @@ bool followsMedia(const Scene& scene, const std::string& integrator);
 Color volPathRadiance(const RenderContext& ctx, const IntegratorSettings& settings, const Ray& cameraRay, Rng& rng);
 
 // Transmittance from ray.o to ray.tMax (∞: until nothing more is hit) through the media and null
-// surfaces on the way, starting in `medium` (−1: none).
-Color shadowTransmittance(const RenderContext& ctx, Ray ray, int medium);
+// surfaces on the way, starting in `medium` (−1: none); heterogeneous media estimate it with
+// numbers from `rng`.
+Color shadowTransmittance(const RenderContext& ctx, Ray ray, int medium, Rng& rng);
 
 }  // namespace rc

@@ -1,6 +1,7 @@
-// <medium type="homogeneous"> with its <phase> (parameters: scene/medium.h), and the references to
+// <medium type="homogeneous"> and <medium type="heterogeneous"> with its <phase> (parameters: scene/medium.h), and the references to
 // media from shapes (interior, exterior) and the sensor (medium).
 #include <cmath>
+#include <cstdio>
 
 #include "scene/loader.h"
 
@@ -32,8 +33,10 @@ bool inUnitInterval(const Color& c) { return glm::all(glm::greaterThanEqual(c, C
 int Loader::buildMedium(const std::shared_ptr<XmlFile>& file, const pugi::xml_node& node) {
   const Element e = parseElement(file, node);
   if (e.type.empty()) e.fail("missing attribute 'type'");
-  if (e.type != "homogeneous") e.fail("unknown medium plugin '" + e.type + "' (known: homogeneous)");
+  if (e.type != "homogeneous" && e.type != "heterogeneous")
+    e.fail("unknown medium plugin '" + e.type + "' (known: homogeneous, heterogeneous)");
   Medium m;
+  m.homogeneous = e.type == "homogeneous";
   m.name = (e.id.empty() ? anonymousName(e.type) : e.id) + " (" + file->location(node) + ")";
   bool phaseGiven = false;
   std::map<std::string, VolumePtr> volumes;
@@ -65,10 +68,25 @@ int Loader::buildMedium(const std::shared_ptr<XmlFile>& file, const pugi::xml_no
     e.failParam("sigma_t", "the extinction 'sigma_t' must be non-negative");
   if (!inUnitInterval(m.albedo->minimum()) || !inUnitInterval(m.albedo->maximum()))
     e.failParam("albedo", "the 'albedo' must lie in [0, 1]");
-  // Homogeneous: Mitsuba reads the extinction (its majorant) at the interaction's default
-  // position, the origin, whatever volume gives it.
-  m.sigmaT = sigmaT->eval(Vec3(0.0f)) * scale;
-  if (!std::isfinite(maxComponent(m.sigmaT))) e.failParam("sigma_t", "'sigma_t' · 'scale' is not finite");
+  if (m.homogeneous) {
+    // Mitsuba reads the extinction (its majorant) at the interaction's default position, the
+    // origin, whatever volume gives it.
+    m.sigmaT = sigmaT->eval(Vec3(0.0f)) * scale;
+    if (!std::isfinite(maxComponent(m.sigmaT))) e.failParam("sigma_t", "'sigma_t' · 'scale' is not finite");
+  } else {
+    m.density = sigmaT;
+    m.scale = scale;
+    m.majorant = scale * sigmaT->largestValue();
+    if (!std::isfinite(m.majorant)) e.failParam("sigma_t", "the majorant 'scale' · max 'sigma_t' is not finite");
+    const Bounds3 box = sigmaT->bounds();
+    const double across = double(m.majorant) * glm::length(box.hi - box.lo);
+    if (m.majorant > 0.0f && !(across <= kMaxCollisionsAcross)) {
+      char text[256];
+      std::snprintf(text, sizeof(text), "the majorant 'scale' · max 'sigma_t' = %g over the volume's diagonal means %g expected null collisions per ray across it (at most %g): lower 'scale'",
+                    m.majorant, across, kMaxCollisionsAcross);
+      e.failParam("sigma_t", text);
+    }
+  }
   checkUnused(e);
   const int index = static_cast<int>(scene_.media.size());
   scene_.media.push_back(std::move(m));

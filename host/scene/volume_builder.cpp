@@ -1,6 +1,9 @@
 // <volume>: gridvolume (a `.vol` file, scene/volume_grid_file.h) and constvolume, as Mitsuba 3's
 // src/volumes/{grid,const}.cpp read them (parameters: texture/volume.h); a float or rgb parameter
 // where a volume is expected is a constant volume.
+#include <algorithm>
+#include <cmath>
+
 #include "scene/loader.h"
 #include "scene/volume_grid_file.h"
 
@@ -12,7 +15,7 @@ VolumePtr Loader::buildVolume(const std::shared_ptr<XmlFile>& file, const pugi::
   for (const pugi::xml_node& child : e.children) unexpectedChild(e, child);
   VolumePtr volume;
   if (e.type == "constvolume") {
-    volume = makeConstVolume(e.located([&] { return e.props.getColor("value", Color(1.0f)); }));
+    volume = makeConstVolume(e.located([&] { return e.props.getColor("value", Color(1.0f)); }), e.transform("to_world"));
   } else if (e.type == "gridvolume") {
     const std::string fn = e.located([&] { return e.props.getString("filename", ""); });
     if (fn.empty()) e.fail("missing parameter 'filename'");
@@ -28,13 +31,29 @@ VolumePtr Loader::buildVolume(const std::shared_ptr<XmlFile>& file, const pugi::
     if (grid.channels != 1 && grid.channels != 3)
       e.failParam("filename", "'" + fn + "' has " + std::to_string(grid.channels) +
                                   " channels; a gridvolume read as a colour needs 1 or 3");
-    const Mat4 toWorld = e.transform("to_world");
+    Mat4 toWorld = e.transform("to_world");
+    if (e.located([&] { return e.props.getBool("use_grid_bbox", false); })) {
+      // Mitsuba's VolumeGrid::bbox_transform: the file's bounds are the unit cube, to_world follows.
+      Mat4 boundsToCube(1.0f);
+      for (int a = 0; a < 3; ++a) boundsToCube[a][a] = grid.boundsMax[a] - grid.boundsMin[a];
+      boundsToCube[3] = Vec4(grid.boundsMin[0], grid.boundsMin[1], grid.boundsMin[2], 1.0f);
+      toWorld = toWorld * boundsToCube;
+    }
     const float det = glm::determinant(toWorld);
-    if (!(std::fabs(det) > 0.0f) || !std::isfinite(det)) e.failParam("to_world", "the volume's to_world is singular");
+    if (!(std::fabs(det) > 0.0f) || !std::isfinite(det))
+      e.failParam("to_world", "the volume's to_world (with the file's bounds where use_grid_bbox) is singular");
     GridVolumeData data;
     for (int a = 0; a < 3; ++a) data.size[a] = grid.size[a];
     data.channels = grid.channels;
     data.values = std::move(grid.values);
+    if (e.props.has("max_value")) {
+      // Mitsuba takes it as the majorant as given; below the data it would not bound the density.
+      data.maxValue = e.located([&] { return e.props.getFloat("max_value", 0.0f); });
+      float dataMax = 0.0f;
+      for (const float v : data.values) dataMax = std::max(dataMax, v);
+      if (!(data.maxValue >= dataMax) || !std::isfinite(data.maxValue))
+        e.failParam("max_value", "'max_value' must be finite and at least the grid's largest value " + std::to_string(dataMax));
+    }
     volume = makeGridVolume(std::move(data), filter == "nearest" ? VolumeFilter::Nearest : VolumeFilter::Trilinear,
                             wrap == "mirror" ? TextureWrap::Mirror : wrap == "clamp" ? TextureWrap::Clamp : TextureWrap::Repeat,
                             glm::inverse(toWorld));

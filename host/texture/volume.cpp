@@ -5,18 +5,32 @@
 #include <cmath>
 
 namespace rc {
+
+Bounds3 unitCubeBounds(const Mat4& toWorld) {
+  Bounds3 b{Vec3(INFINITY), Vec3(-INFINITY)};
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec4 h = toWorld * Vec4(corner & 1 ? 1.0f : 0.0f, corner & 2 ? 1.0f : 0.0f, corner & 4 ? 1.0f : 0.0f, 1.0f);
+    const Vec3 p = Vec3(h) / h.w;
+    b.lo = glm::min(b.lo, p);
+    b.hi = glm::max(b.hi, p);
+  }
+  return b;
+}
+
 namespace {
 
 class ConstVolume final : public Volume {
  public:
-  explicit ConstVolume(const Color& value) : value_(value) {}
+  ConstVolume(const Color& value, const Mat4& toWorld) : value_(value), bounds_(unitCubeBounds(toWorld)) {}
   Color eval(const Vec3&) const override { return value_; }
   Color minimum() const override { return value_; }
   Color maximum() const override { return value_; }
   bool constant() const override { return true; }
+  Bounds3 bounds() const override { return bounds_; }
 
  private:
   Color value_;
+  Bounds3 bounds_;
 };
 
 // Dr.Jit's wrap of an integer voxel coordinate (drjit/texture.h): clamp to the edge, repeat
@@ -49,7 +63,7 @@ int voxelFloor(float x) {
 class GridVolume final : public Volume {
  public:
   GridVolume(GridVolumeData data, VolumeFilter filter, TextureWrap wrap, const Mat4& toLocal)
-      : data_(std::move(data)), filter_(filter), wrap_(wrap), toLocal_(toLocal) {
+      : data_(std::move(data)), filter_(filter), wrap_(wrap), toLocal_(toLocal), bounds_(unitCubeBounds(glm::inverse(toLocal))) {
     min_ = Color(INFINITY);
     max_ = Color(-INFINITY);
     const size_t voxels = data_.values.size() / data_.channels;
@@ -90,6 +104,8 @@ class GridVolume final : public Volume {
   }
   Color minimum() const override { return min_; }
   Color maximum() const override { return max_; }
+  Bounds3 bounds() const override { return bounds_; }
+  float largestValue() const override { return data_.maxValue >= 0.0f ? data_.maxValue : maxComponent(max_); }
 
  private:
   Color voxel(size_t i) const {
@@ -104,6 +120,7 @@ class GridVolume final : public Volume {
   VolumeFilter filter_;
   TextureWrap wrap_;
   Mat4 toLocal_;
+  Bounds3 bounds_;
   Color min_, max_;
 };
 
@@ -121,7 +138,7 @@ class VolumeTexture final : public Texture {
 
 }  // namespace
 
-VolumePtr makeConstVolume(const Color& value) { return std::make_shared<ConstVolume>(value); }
+VolumePtr makeConstVolume(const Color& value, const Mat4& toWorld) { return std::make_shared<ConstVolume>(value, toWorld); }
 
 VolumePtr makeGridVolume(GridVolumeData data, VolumeFilter filter, TextureWrap wrap, const Mat4& toLocal) {
   return std::make_shared<GridVolume>(std::move(data), filter, wrap, toLocal);

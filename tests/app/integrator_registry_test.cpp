@@ -53,6 +53,36 @@ TEST(IntegratorRegistry, ParameterNamesRouteDefines) {
   EXPECT_TRUE(integratorParameterNames("bdpt").empty());
 }
 
+// Mitsuba's differentiable path tracers render path's primal image: max_depth defaults to 6 in
+// their base class (ad/integrators/common.py), direct_projective forces 2; the projective ones'
+// gradient settings are accepted, and prb does not take them.
+TEST(IntegratorRegistry, DifferentiableIntegratorsAreTheirPrimalPathTracer) {
+  for (const char* name : {"prb", "prb_basic", "prb_projective", "prbvolpath"}) {
+    IntegratorSettings st;
+    ParamReader none(nullptr);
+    findIntegrator(name)->readParams(none, st);
+    EXPECT_EQ(st.maxDepth, 6) << name;
+    EXPECT_EQ(st.rrDepth, 5) << name;
+  }
+  IntegratorSettings direct;
+  ParamReader none(nullptr);
+  findIntegrator("direct_projective")->readParams(none, direct);
+  EXPECT_EQ(direct.maxDepth, 2);
+  EXPECT_TRUE(contains(integratorParameterNames("prb_projective"), "guiding"));
+  EXPECT_FALSE(contains(integratorParameterNames("prb"), "sppc"));
+
+  const Scene projective = loadIntegratorXml(
+      "<integrator type=\"direct_projective\"><integer name=\"max_depth\" value=\"7\"/>"
+      "<integer name=\"sppc\" value=\"32\"/><string name=\"guiding\" value=\"grid\"/></integrator>");
+  EXPECT_EQ(errorOf(projective.integrator), "");
+  const Scene wrongGuide = loadIntegratorXml(
+      "<integrator type=\"prb_projective\"><string name=\"guiding\" value=\"kdtree\"/></integrator>");
+  EXPECT_NE(errorOf(wrongGuide.integrator).find("guiding"), std::string::npos);
+  const Scene prbWithSppc =
+      loadIntegratorXml("<integrator type=\"prb\"><integer name=\"sppc\" value=\"32\"/></integrator>");
+  EXPECT_NE(errorOf(prbWithSppc.integrator).find("sppc"), std::string::npos);
+}
+
 TEST(IntegratorRegistry, MakesEveryEntry) {
   for (const IntegratorEntry& e : integratorEntries()) {
     IntegratorSettings s;

@@ -117,12 +117,19 @@ TEST(CostPilot, RendersWithTheCandidateItChose) {
   // By default there is no cost pilot (its choice would follow timings).
   EXPECT_EQ(test::statText(test::renderScene(s, test::rcacheSettings(s), 4, 1).stats, "cost_pilot"), "");
   // At its default budget the pilot tries no cache for a 4-spp render (each candidate's pilot
-  // would cost more than 5 % of it): the candidates are reported as not tried and the share
-  // pilot's verdict without the split stands.
+  // would cost more than 5 % of it): the candidates are reported as not tried, the fill's predicted
+  // payoff (cache/fill_payoff.h) decides, and where it caches the share pilot's verdict without the
+  // split stands.
   const auto quick = test::renderScene(s, test::rcacheSettings(s, {{"cost_pilot", "true"}}), 4, 1);
   EXPECT_EQ(test::statText(quick.stats, "cost_pilot").rfind("no candidate", 0), 0u) << test::statText(quick.stats, "cost_pilot");
   EXPECT_NE(statJson(quick.stats, "cost_pilot_candidates").find("\"tried\": false"), std::string::npos);
-  EXPECT_EQ(test::statText(quick.stats, "fallback"), test::statText(unmeasured.stats, "fallback"));
+  const std::string payoff = test::statText(quick.stats, "fill_payoff");
+  const std::string share = test::statText(unmeasured.stats, "fallback");
+  ASSERT_FALSE(payoff.empty());
+  if (payoff.rfind("path traced", 0) == 0)
+    EXPECT_EQ(test::statText(quick.stats, "fallback"), payoff + " (" + share + ")");
+  else
+    EXPECT_EQ(test::statText(quick.stats, "fallback"), share);
   EXPECT_LE(quick.stats.get("lobe_split_fraction", 0.0), 0.0);
 }
 

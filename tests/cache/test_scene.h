@@ -14,6 +14,7 @@
 #include "common/property_builders.h"
 #include "core/properties.h"
 #include "geometry/accel.h"
+#include "render/direct_integrator.h"
 #include "render/integrator.h"
 #include "render/light_sampler.h"
 #include "render/path_integrator.h"
@@ -123,6 +124,8 @@ inline RenderResult renderScene(const Scene& scene, const IntegratorSettings& se
   std::unique_ptr<Integrator> integ;
   if (settings.type == "path") {
     integ = makePathIntegrator(settings);
+  } else if (settings.type == "direct") {
+    integ = makeDirectIntegrator(settings);
   } else {
     auto rcache = std::make_unique<RcacheIntegrator>(settings);
     rcache->setBackend(backend.get());

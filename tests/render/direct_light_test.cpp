@@ -113,6 +113,33 @@ TEST(LightSampler, EnvironmentIsTheLookupsRadianceExactly) {
   }
 }
 
+// environmentLookups (a wave's escaped directions as arrays, the envmap's pass vectorised) gives
+// environmentLookup's radiance and density bit for bit, with an envmap and a constant emitter
+// summed in entry order; without the densities it leaves them 0.
+TEST(LightSampler, EnvironmentLookupsAreTheLookupsExactly) {
+  Scene s = litFloor(test::diffuse(Color(0.5f)));
+  test::addEmitter(s, test::constantEmitter(Color(0.1f, 0.2f, 0.3f)));
+  const test::World w(std::move(s));
+  LightSampler::EnvironmentWave wave;
+  const size_t n = 1001;
+  wave.fit(n);
+  Rng rng(6);
+  for (size_t k = 0; k < n; ++k) {
+    const float z = 1 - 2 * rng.nextFloat(), phi = 2 * kPi * rng.nextFloat(), r = std::sqrt(std::max(0.0f, 1 - z * z));
+    wave.x[k] = r * std::cos(phi), wave.y[k] = r * std::sin(phi), wave.z[k] = z;
+  }
+  for (bool withPdf : {true, false}) {
+    w.lights->environmentLookups(wave, n, withPdf);
+    for (size_t k = 0; k < n; ++k) {
+      const LightSampler::EnvironmentLookup one = w.lights->environmentLookup(Vec3(wave.x[k], wave.y[k], wave.z[k]));
+      const LightSampler::EnvironmentLookup batch = wave.at(k);
+      ASSERT_EQ(batch.radiance, one.radiance) << k;
+      ASSERT_EQ(batch.pdf, withPdf ? one.pdf : 0.0f) << k;
+      ASSERT_GT(one.pdf, 0.0f);
+    }
+  }
+}
+
 using test::Stat;
 
 // The MIS estimator (light + BSDF sampling) is unbiased: it matches pure BSDF sampling (which

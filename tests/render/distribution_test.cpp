@@ -1,11 +1,13 @@
 // Distribution1D's guided search returns the bin of the inverse-CDF definition (upper_bound on the
 // cumulative table) for every u, including u on a bin edge, zero-weight bins and lopsided weights;
-// PiecewiseConstant2D's flat table returns the cell of a marginal and per-row Distribution1Ds.
+// PiecewiseConstant2D's flat table returns the cell of a marginal and per-row Distribution1Ds;
+// sampleLinear draws from the linear density it claims (a histogram against linearPdf).
 #include "render/distribution.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "core/error.h"
@@ -136,6 +138,46 @@ TEST(PiecewiseConstant2D, FlatTableGivesTheCellsOfPerRowDistributions) {
 TEST(PiecewiseConstant2D, RejectsWeightsOfTheWrongSize) {
   EXPECT_THROW(PiecewiseConstant2D({1.0, 2.0, 3.0}, 2, 2), Error);
   EXPECT_THROW(PiecewiseConstant2D({}, 0, 0), Error);
+}
+
+// sampleLinear's histogram against the integral of the linear density over each bin: within 5
+// standard errors of a binomial count, for a ramp up, a ramp down, a ramp from 0 and a constant.
+TEST(SampleLinear, HistogramMatchesLinearDensity) {
+  const float ends[][2] = {{1.0f, 7.0f}, {3.0f, 0.5f}, {0.0f, 2.0f}, {5.0f, 0.0f}, {1.0f, 1.0f}};
+  const int bins = 16, n = 64000;
+  for (const auto& e : ends) {
+    const float a = e[0], b = e[1];
+    std::vector<int> count(bins, 0);
+    Rng rng(21);
+    for (int k = 0; k < n; ++k) {
+      const float x = sampleLinear(rng.nextFloat(), a, b);
+      ASSERT_GE(x, 0.0f);
+      ASSERT_LT(x, 1.0f);
+      ++count[std::min(bins - 1, static_cast<int>(x * bins))];
+    }
+    for (int i = 0; i < bins; ++i) {
+      // ∫ over the bin of 2((1 − x)a + xb)/(a + b): the density at the bin's midpoint times its width.
+      const double p = linearPdf((i + 0.5f) / bins, a, b) / bins;
+      const double se = std::sqrt(n * p * (1.0 - p));
+      EXPECT_NEAR(count[i], n * p, 5.0 * se + 1.0) << "a " << a << " b " << b << " bin " << i;
+    }
+  }
+}
+
+// The inverse CDF at its ends and where the density is 0 at one end: x = 0 for u = 0, and the
+// CDF (a x + (b − a) x²/2) / ((a + b)/2) of the returned x gives back u.
+TEST(SampleLinear, InvertsTheCdf) {
+  const float ends[][2] = {{1.0f, 7.0f}, {3.0f, 0.5f}, {0.0f, 2.0f}, {5.0f, 0.0f}, {1e-6f, 1e6f}};
+  for (const auto& e : ends) {
+    const float a = e[0], b = e[1];
+    EXPECT_EQ(sampleLinear(0.0f, a, b), 0.0f);
+    for (float u : {0.01f, 0.25f, 0.5f, 0.9f, 0.999f}) {
+      const double x = sampleLinear(u, a, b);
+      const double cdf = (a * x + (b - a) * x * x / 2.0) / ((a + b) / 2.0);
+      EXPECT_NEAR(cdf, u, 2e-6) << "a " << a << " b " << b;
+    }
+  }
+  EXPECT_EQ(sampleLinear(0.3f, 0.0f, 0.0f), 0.3f);  // no density: uniform (never drawn by a warp)
 }
 
 }  // namespace

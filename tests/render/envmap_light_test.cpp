@@ -4,6 +4,8 @@
 // below are computed from that definition by hand, not from the implementation's output.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/rng.h"
 #include "render/envmap_light.h"
 
@@ -93,26 +95,100 @@ TEST(EnvmapLight, SmallImagesArePaddedByReplication) {
 }
 
 // A sky with a sharp horizon and a bright sun texel.
-EnvmapLight sunSky() {
+const Mat3 kSunSkyTurn(glm::mat3(Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(0, -1, 0)));
+EnvmapLight sunSky(const Mat3& toWorld = kSunSkyTurn) {
   const int W = 32, H = 16;
   std::vector<Color> px;
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x)
       px.push_back((x == 9 && y == 4) ? Color(400.0f, 300.0f, 200.0f) : y < H / 2 ? Color(0.3f, 0.5f, 1.0f) : Color(0.05f));
-  return EnvmapLight(W, H, px, 1.0f, Mat3(glm::mat3(Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(0, -1, 0))));
+  return EnvmapLight(W, H, px, 1.0f, toWorld);
+}
+
+// Mitsuba's sampling density (its Hierarchical2D warp over luminance · sin θ_row at the texel
+// centres): pdf · sinθ is the bilinear interpolation of those weights, up to one normalisation.
+// Grey texels (luminance = the value), points inside cells, at the seam and next to a pole.
+TEST(EnvmapLight, DensityIsBilinearInLuminanceTimesSinTheta) {
+  const int W = 4, H = 5;  // texel rows at θ = 0, π/4, π/2, 3π/4, π
+  const float value[H][W] = {{1, 1, 1, 1}, {2, 8, 1, 3}, {5, 1, 1, 6}, {1, 2, 9, 1}, {4, 4, 4, 4}};
+  std::vector<Color> px;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) px.push_back(Color(value[y][x]));
+  const EnvmapLight env(W, H, px, 1.0f, Mat3(1.0f));
+  // The weight at texel (x, y) and its bilinear interpolation at cell coordinates (s, t): u = (s + 0.5)/W, v = t/(H − 1).
+  auto weight = [&](int x, int y) { return value[y][x % W] * std::sin(kPiD * y / (H - 1)); };
+  auto expected = [&](double s, double t) {
+    const int x = static_cast<int>(std::floor(s)), y = static_cast<int>(std::floor(t));
+    const double fx = s - x, fy = t - y;
+    return (1 - fy) * ((1 - fx) * weight(x, y) + fx * weight(x + 1, y)) + fy * ((1 - fx) * weight(x, y + 1) + fx * weight(x + 1, y + 1));
+  };
+  auto measured = [&](double s, double t) {
+    float sinTheta;
+    const Vec3 d = envDirection(static_cast<float>((s + 0.5) / W), static_cast<float>(t / (H - 1)), &sinTheta);
+    return double(env.pdf(d)) * sinTheta;
+  };
+  const double points[][2] = {{0.3, 1.6}, {1.5, 1.5}, {2.9, 2.2}, {3.7, 2.5}, {0.5, 0.1}, {2.2, 3.8}};
+  const double scale = measured(1.25, 1.25) / expected(1.25, 1.25);
+  for (const auto& p : points)
+    EXPECT_NEAR(measured(p[0], p[1]) / scale, expected(p[0], p[1]), 1e-4 * expected(p[0], p[1])) << p[0] << ", " << p[1];
+}
+
+// Samples land with the density pdf() reports, also within a cell (bins a quarter of a cell
+// wide): the histogram of sampled (u, v) against pdf integrated over each bin, where the bin
+// expects ≥ 50 samples, within 5 binomial standard errors.
+TEST(EnvmapLight, SampleHistogramMatchesPdfWithinCells) {
+  const EnvmapLight env = sunSky(Mat3(1.0f));
+  const int W = 32, bands = 15, sub = 4, nu = W * sub, nv = bands * sub, n = 1000000;
+  std::vector<int> count(static_cast<size_t>(nu) * nv, 0);
+  Rng rng(6);
+  for (int k = 0; k < n; ++k) {
+    const EnvmapLight::Sample smp = env.sample(Vec2(rng.nextFloat(), rng.nextFloat()));
+    ASSERT_GT(smp.value.pdf, 0.0f);
+    const Vec2 uv = envUv(smp.dir);
+    // Cell coordinates: cells start at the texel centres, u = (s + 0.5)/W.
+    double s = uv.x * W - 0.5;
+    if (s < 0) s += W;
+    const int bi = std::min(nu - 1, static_cast<int>(s * sub)), bj = std::min(nv - 1, static_cast<int>(uv.y * bands * sub));
+    ++count[static_cast<size_t>(bj) * nu + bi];
+  }
+  int checked = 0;
+  for (int bj = 0; bj < nv; ++bj)
+    for (int bi = 0; bi < nu; ++bi) {
+      // ∫ pdf dω over the bin by 4×4 midpoints, dω = 2π² sinθ du dv.
+      double p = 0.0;
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) {
+          const float u = static_cast<float>(((bi + (a + 0.5) / 4) / sub + 0.5) / W);
+          const float v = static_cast<float>((bj + (b + 0.5) / 4) / (sub * bands));
+          float sinTheta;
+          const Vec3 d = envDirection(u >= 1.0f ? u - 1.0f : u, v, &sinTheta);
+          p += env.pdf(d) * sinTheta;
+        }
+      p *= 2.0 * kPiD * kPiD / (16.0 * nu * nv);
+      if (n * p < 50.0) continue;
+      ++checked;
+      const double se = std::sqrt(n * p * (1.0 - p));
+      EXPECT_NEAR(count[static_cast<size_t>(bj) * nu + bi], n * p, 5.0 * se + 0.01 * n * p) << "bin " << bi << ", " << bj;
+    }
+  EXPECT_GT(checked, 1000);
 }
 
 TEST(EnvmapLight, SampledPdfIsPdfAndIntegratesToOne) {
   const EnvmapLight env = sunSky();
+  float sunSin;
+  const Vec3 sunLocal = envDirection(9.5f / 32.0f, 4.0f / 15.0f, &sunSin);
+  const float sunPdfSin = env.pdf(kSunSkyTurn * sunLocal) * sunSin;
   Rng rng(4);
   for (int i = 0; i < 2000; ++i) {
     const EnvmapLight::Sample s = env.sample(Vec2(rng.nextFloat(), rng.nextFloat()));
     ASSERT_GT(s.value.pdf, 0.0f);
-    EXPECT_NEAR(s.value.pdf, env.pdf(s.dir), 1e-4f * s.value.pdf);
-    // The sample's radiance is read at its (u, v), eval's at the (u, v) recovered from the
-    // direction: they differ by float rounding (≲ 1e-6 in u) times the map's steepest slope (the
-    // sun's 400 over one of 32 texel spacings).
+    // The sample's radiance and density are read at its (u, v), eval's and pdf's at the (u, v)
+    // recovered from the direction: they differ by float rounding (≲ 1e-6 in u) times the map's
+    // steepest slope (the sun's 400 over one of 32 texel spacings; for the density, which is
+    // bilinear in pdf · sinθ, the sun texel's pdf · sinθ over one spacing).
     const float slopeTolerance = 1e-6f * 400.0f * 32.0f;
+    const float sinTheta = std::sqrt(s.dir.x * s.dir.x + s.dir.y * s.dir.y);  // the map's pole is world +z
+    EXPECT_NEAR(s.value.pdf * sinTheta, env.pdf(s.dir) * sinTheta, 1e-6f * 32.0f * sunPdfSin + 1e-4f * s.value.pdf * sinTheta);
     for (int k = 0; k < 3; ++k)
       EXPECT_NEAR(s.value.radiance[k], env.eval(s.dir)[k], slopeTolerance + 1e-4f * env.eval(s.dir)[k]);
   }

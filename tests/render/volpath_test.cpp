@@ -1,79 +1,17 @@
 // The volumetric path tracer (render/volpath.h) on media whose answer is known in closed form, and
 // the phase functions (render/phase_function.h) against their definitions.
-// Monte Carlo checks compare against the exact value within 5 standard errors of the same
-// samples (false failure rate below 1e-6 per check; a bias beyond ~5σ fails).
+// Monte Carlo checks: volpath_test_util.h.
 #include <gtest/gtest.h>
 
 #include "core/rng.h"
 #include "render/phase_function.h"
 #include "render/volpath.h"
-#include "render_test_scenes.h"
+#include "volpath_test_util.h"
 
 namespace rc {
 namespace {
 
-BsdfPtr nullBsdf() {
-  Properties props;
-  props.pluginType = "null";
-  return createBsdf(props, {});
-}
-
-BsdfPtr smoothDielectric(float intIor) {
-  Properties props;
-  props.pluginType = "dielectric";
-  props.set("int_ior", test::floatProp(intIor));
-  props.set("ext_ior", test::floatProp(1.0f));
-  return createBsdf(props, {});
-}
-
-Medium homogeneous(const Color& sigmaT, const Color& albedo, PhaseFunction phase = {}, bool sampleEmitters = true) {
-  Medium m;
-  m.name = "test";
-  m.sigmaT = sigmaT;
-  m.albedo = makeConstVolume(albedo);
-  m.phase = phase;
-  m.sampleEmitters = sampleEmitters;
-  return m;
-}
-
-// A unit sphere at the origin bounding `medium`, its surface `boundary`, under a constant sky of
-// radiance 1.
-Scene mediumSphere(const Medium& medium, BsdfPtr boundary) {
-  Scene s;
-  s.media.push_back(medium);
-  Sphere sp;
-  sp.radius = 1.0f;
-  sp.bsdf = test::addBsdf(s, std::move(boundary));
-  sp.media.interior = 0;
-  s.spheres.push_back(sp);
-  test::addEmitter(s, test::constantEmitter(Color(1.0f)));
-  return s;
-}
-
 using test::rayAt;
-
-struct Estimate {
-  Color mean{0.0f}, stderr_{0.0f};
-};
-
-Estimate estimate(const test::World& w, const IntegratorSettings& s, const Ray& ray, int n, uint64_t seed) {
-  const RenderContext ctx = w.context();
-  Color sum(0.0f), sum2(0.0f);
-  for (int i = 0; i < n; ++i) {
-    Rng rng(hashMix(seed, static_cast<uint64_t>(i)));
-    const Color v = volPathRadiance(ctx, s, ray, rng);
-    sum += v;
-    sum2 += v * v;
-  }
-  Estimate e;
-  e.mean = sum / float(n);
-  e.stderr_ = glm::sqrt(glm::max(Color(0.0f), sum2 / float(n) - e.mean * e.mean) / float(n));
-  return e;
-}
-
-void expectNear(const Estimate& e, const Color& exact, const char* what) {
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(e.mean[c], exact[c], 5.0f * e.stderr_[c] + 1e-4f) << what << " channel " << c;
-}
 
 // A purely absorbing sphere with an invisible boundary in front of the sky: exp(−σt·chord) per
 // channel, for the camera path (free-flight sampling) and, exactly, for a shadow ray.
@@ -86,12 +24,14 @@ TEST(Volpath, AbsorbingSphereTransmitsBeersLaw) {
     const Color exact = glm::exp(-sigma * chord);
     const Ray ray = rayAt({b, 0.0f, 5.0f}, {b, 0.0f, 0.0f});
     expectNear(estimate(w, IntegratorSettings(), ray, 20000, 1), exact, "camera path");
-    const Color tr = shadowTransmittance(ctx, ray, -1);
+    Rng rng(1);  // a homogeneous medium draws nothing
+    const Color tr = shadowTransmittance(ctx, ray, -1, rng);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(tr[c], exact[c], 1e-4f * exact[c] + 1e-6f) << "shadow ray, channel " << c;
   }
   // An opaque boundary blocks shadow rays (only null surfaces pass them).
   const test::World opaque(mediumSphere(homogeneous(sigma, Color(0.0f)), test::diffuse(Color(0.5f))));
-  EXPECT_EQ(shadowTransmittance(opaque.context(), rayAt({0, 0, 5}, {0, 0, 0}), -1), Color(0.0f));
+  Rng rng(1);
+  EXPECT_EQ(shadowTransmittance(opaque.context(), rayAt({0, 0, 5}, {0, 0, 0}), -1, rng), Color(0.0f));
 }
 
 // Shadow rays pass null-like surfaces by Mitsuba's eval_null_transmission: a mask lets 1 − opacity
@@ -107,12 +47,13 @@ TEST(Volpath, ShadowRaysPassMasksByTheirOpenShare) {
   s.meshes.push_back(test::quad({-1, -1, 4}, {1, -1, 4}, {1, 1, 4}, {-1, 1, 4}, test::addBsdf(s, test::diffuse(Color(0.5f)))));
   const test::World w(std::move(s));
   Ray ray = rayAt({0, 0, 0}, {0, 0, 1});
+  Rng rng(1);
   ray.tMax = 1.5f;
-  EXPECT_NEAR(shadowTransmittance(w.context(), ray, -1).g, 0.7f, 1e-6f);
+  EXPECT_NEAR(shadowTransmittance(w.context(), ray, -1, rng).g, 0.7f, 1e-6f);
   ray.tMax = 3.0f;
-  EXPECT_NEAR(shadowTransmittance(w.context(), ray, -1).g, 0.49f, 1e-6f);
+  EXPECT_NEAR(shadowTransmittance(w.context(), ray, -1, rng).g, 0.49f, 1e-6f);
   ray.tMax = 5.0f;
-  EXPECT_EQ(shadowTransmittance(w.context(), ray, -1), Color(0.0f));
+  EXPECT_EQ(shadowTransmittance(w.context(), ray, -1, rng), Color(0.0f));
 }
 
 // A lossless medium (albedo 1) inside a lossless boundary under a uniform sky of radiance 1 sees
@@ -151,13 +92,16 @@ TEST(Volpath, CameraMediumAttenuatesEverything) {
   expectNear(estimate(w, IntegratorSettings(), rayAt({0, 0, 0}, {0, 0, 1}), 2000, 3), Color(1.0f, 0.0f, 1.0f), "fog");
 }
 
-// Mitsuba's volpath and volpathmis follow media, its path and direct render surfaces only; rcache
-// renders what the file's integrator would.
+// Mitsuba's volpath, volpathmis and prbvolpath (the differentiable one, rendered as its primal
+// image) follow media, its path, prb and direct render surfaces only; rcache renders what the file's
+// integrator would.
 TEST(Volpath, OnlyVolumetricIntegratorsFollowMedia) {
   Scene s = mediumSphere(homogeneous(Color(1.0f), Color(0.5f)), nullBsdf());
   s.integrator.type = "volpath";
   EXPECT_TRUE(followsMedia(s, "volpath"));
   EXPECT_TRUE(followsMedia(s, "volpathmis"));
+  EXPECT_TRUE(followsMedia(s, "prbvolpath"));
+  EXPECT_FALSE(followsMedia(s, "prb"));
   EXPECT_TRUE(followsMedia(s, "rcache"));
   EXPECT_FALSE(followsMedia(s, "path"));
   EXPECT_FALSE(followsMedia(s, "direct"));

@@ -1,6 +1,7 @@
 // <medium>, <phase>, <volume> and the volume texture as the loader reads them (scene/medium.h,
 // texture/volume.h): values from Mitsuba's definitions, and one precise file:line error per
 // hostile input.
+#include <array>
 #include <cstring>
 
 #include "scene_test_util.h"
@@ -10,7 +11,8 @@ namespace rc::test {
 namespace {
 
 // A `.vol` file (scene/volume_grid_file.h) of x·y·z voxels with `channels` float32 values each.
-std::string volFile(int x, int y, int z, int channels, const std::vector<float>& values) {
+std::string volFile(int x, int y, int z, int channels, const std::vector<float>& values,
+                    const std::array<float, 6>& bounds = {0, 0, 0, 0, 0, 0}) {
   std::string s = "VOL\x03";
   auto i32 = [&](int32_t v) {
     for (int i = 0; i < 4; ++i) s.push_back(static_cast<char>((static_cast<uint32_t>(v) >> (8 * i)) & 0xff));
@@ -22,7 +24,7 @@ std::string volFile(int x, int y, int z, int channels, const std::vector<float>&
   };
   i32(1);
   i32(x), i32(y), i32(z), i32(channels);
-  for (int i = 0; i < 6; ++i) f32(0.0f);
+  for (const float b : bounds) f32(b);
   for (float v : values) f32(v);
   return s;
 }
@@ -113,6 +115,83 @@ TEST(MediumLoad, GridVolumeTrilinearNearestAndWrapModes) {
   EXPECT_NEAR(placed->maximum().r, 1.0f, 1e-6f);
 }
 
+// Mitsuba's heterogeneous medium: extinction scale · sigma_t(p) within the sigma_t volume's bounds
+// (a gridvolume's to_world; a float is a constvolume over the unit cube), majorant scale · the
+// grid's largest value of any channel.
+TEST(MediumLoad, HeterogeneousMediumTakesItsBoundsAndMajorantFromSigmaT) {
+  TempDir dir;
+  dir.write("d.vol", volFile(2, 1, 1, 1, {0.5f, 2.0f}));
+  dir.write("b.vol", volFile(2, 1, 1, 1, {0.5f, 2.0f}, {-1, 0, 0, 3, 2, 0.5f}));
+  const Scene s = loadScene(dir.write("s.xml", sceneXml(R"(
+  <medium type="heterogeneous" id="smoke">
+    <volume type="gridvolume" name="sigma_t">
+      <string name="filename" value="d.vol"/>
+      <transform name="to_world"><scale x="4" y="2" z="2"/><translate x="-2" y="-1" z="-1"/></transform>
+    </volume>
+    <float name="scale" value="3"/>
+    <float name="albedo" value="0.9"/>
+    <phase type="hg"><float name="g" value="0.4"/></phase>
+  </medium>
+  <medium type="heterogeneous" id="plain"><float name="sigma_t" value="0.5"/></medium>
+  <medium type="heterogeneous" id="boxed">
+    <volume type="gridvolume" name="sigma_t">
+      <string name="filename" value="b.vol"/>
+      <boolean name="use_grid_bbox" value="true"/>
+      <float name="max_value" value="5"/>
+      <transform name="to_world"><translate x="10"/></transform>
+    </volume>
+  </medium>)")));
+  ASSERT_EQ(s.media.size(), 3u);
+  const Medium& smoke = s.media[0];
+  EXPECT_FALSE(smoke.homogeneous);
+  EXPECT_FLOAT_EQ(smoke.majorant, 6.0f);
+  EXPECT_EQ(smoke.density->bounds().lo, Vec3(-2, -1, -1));
+  EXPECT_EQ(smoke.density->bounds().hi, Vec3(2, 1, 1));
+  EXPECT_NEAR(smoke.extinctionAt(Vec3(0.0f)).r, 3.0f * 1.25f, 1e-5f);  // between the voxel centres
+  EXPECT_EQ(smoke.albedo->eval(Vec3(0.0f)), Color(0.9f));
+  EXPECT_EQ(smoke.phase.type, PhaseFunction::Type::HenyeyGreenstein);
+  const Medium& plain = s.media[1];
+  EXPECT_FLOAT_EQ(plain.majorant, 0.5f);
+  EXPECT_EQ(plain.density->bounds().lo, Vec3(0.0f));
+  EXPECT_EQ(plain.density->bounds().hi, Vec3(1.0f));
+  EXPECT_EQ(plain.albedo->eval(Vec3(0.0f)), Color(0.75f));
+  // use_grid_bbox: the file's bounds (−1,0,0)…(3,2,0.5) are the cube, then to_world; max_value is
+  // the majorant.
+  const Medium& boxed = s.media[2];
+  EXPECT_EQ(boxed.density->bounds().lo, Vec3(9, 0, 0));
+  EXPECT_EQ(boxed.density->bounds().hi, Vec3(13, 2, 0.5f));
+  EXPECT_NEAR(boxed.extinctionAt(Vec3(11, 1, 0.25f)).r, 1.25f, 1e-5f);
+  EXPECT_FLOAT_EQ(boxed.majorant, 5.0f);
+}
+
+// Hostile heterogeneous media: negative or non-finite densities, a majorant that overflows, and one
+// so large that a ray across the volume would take more than kMaxCollisionsAcross lookups.
+TEST(MediumLoad, HostileHeterogeneousMediaAreOnePreciseError) {
+  TempDir dir;
+  auto load = [&](const std::string& body) { return loadScene(dir.write("h.xml", sceneXml(body))); };
+  auto medium = [](const std::string& params) { return "<medium type=\"heterogeneous\" id=\"m\">\n" + params + "\n</medium>"; };
+  auto grid = [](const std::string& file) {
+    return R"(<volume type="gridvolume" name="sigma_t"><string name="filename" value=")" + file + R"("/></volume>)";
+  };
+  dir.write("neg.vol", volFile(2, 1, 1, 1, {1.0f, -0.5f}));
+  dir.write("nan.vol", volFile(2, 1, 1, 1, {1.0f, std::nanf("")}));
+  dir.write("big.vol", volFile(2, 1, 1, 1, {1.0f, 3e38f}));
+  dir.write("ok.vol", volFile(2, 1, 1, 1, {1.0f, 2.0f}));
+  // A nested volume's problems are the medium's (line 3); a property's are its own line.
+  expectError([&] { load(medium(grid("neg.vol"))); }, {"h.xml:3", "'sigma_t' must be non-negative"});
+  expectError([&] { load(medium(grid("nan.vol"))); }, {"nan.vol"});
+  expectError([&] { load(medium(grid("big.vol") + R"(<float name="scale" value="10"/>)")); }, {"h.xml:3", "majorant", "not finite"});
+  expectError([&] { load(medium(grid("ok.vol") + R"(<float name="scale" value="1e6"/>)")); },
+              {"h.xml:3", "expected null collisions per ray", "lower 'scale'"});
+  expectError([&] { load(medium(R"(<float name="scale" value="nan"/>)")); }, {"h.xml:4", "scale", "not a finite number"});
+  expectError([&] { load(medium(R"(<volume type="gridvolume" name="sigma_t"><string name="filename" value="ok.vol"/>
+    <float name="max_value" value="1.5"/></volume>)")); }, {"h.xml:5", "'max_value' must be finite and at least the grid's largest value 2"});
+  expectError([&] { load(medium(R"(<volume type="gridvolume" name="sigma_t"><string name="filename" value="ok.vol"/>
+    <boolean name="use_grid_bbox" value="true"/></volume>)")); }, {"h.xml:4", "singular"});  // the file's bounds are all 0
+  // Empty (zero majorant) is a vacuum, not an error.
+  EXPECT_EQ(load(medium(R"(<float name="sigma_t" value="0"/>)")).media.at(0).majorant, 0.0f);
+}
+
 // Mitsuba's `volume` texture: the volume at the shading point's world position; a 3-channel grid
 // keeps its channels.
 TEST(MediumLoad, VolumeTextureReadsTheWorldPosition) {
@@ -149,7 +228,7 @@ TEST(MediumLoad, HostileMediaAreOnePreciseError) {
   expectError([&] { load(medium(R"(<phase type="rayleigh"/>)")); }, {"h.xml:4", "unknown phase function 'rayleigh'"});
   expectError([&] { load(medium(R"(<phase type="hg"/><phase type="isotropic"/>)")); }, {"h.xml:4", "one phase function"});
   expectError([&] { load(medium(R"(<float name="density" value="1"/>)")); }, {"h.xml:4", "unsupported parameter 'density'"});
-  expectError([&] { load(R"(<medium type="heterogeneous"/>)"); }, {"h.xml:3", "unknown medium plugin 'heterogeneous'"});
+  expectError([&] { load(R"(<medium type="inhomogeneous"/>)"); }, {"h.xml:3", "unknown medium plugin 'inhomogeneous'", "heterogeneous"});
   expectError([&] { load(withMedia(R"(<ref id="nowhere" name="interior"/>)")); }, {"h.xml:3", "unknown id 'nowhere'"});
   expectError([&] { load(R"(<bsdf type="diffuse" id="b"/>)" + withMedia(R"(<ref id="b" name="exterior"/>)")); },
               {"h.xml:3", "id 'b'", "is not a medium"});
