@@ -4,6 +4,9 @@
 // the seeds' noise. Records whose gradient limit allowed a first-order change of their whole size
 // over the reach a·R (before the eleventh session) made this band about +1 % bright at 16 spp
 // (bench/RESULTS.md, contact17: with these seeds 1.014 of the path tracer, z 5.9; after 1.001).
+// The budget shrinks a and r_min with spp, so the band is checked at 16 and at 64 spp. At 64 spp
+// this scene's band (46 px, 4 reference renders) resolves an error of about 0.8 %, not the few
+// tenths of a percent in front of other contacts (bench/RESULTS.md, bias17, twelfth session).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,7 +18,7 @@
 namespace rc {
 namespace {
 
-constexpr int kSize = 48, kSpp = 16, kSeeds = 12, kRefSpp = 1024, kRefSeeds = 4;
+constexpr int kSize = 48, kRefSpp = 1024, kRefSeeds = 4;
 
 // A diffuse blue sphere resting on a grey floor under a uniform sky (cached whole: the sky's light
 // reaches the floor through the records), seen from the front and above.
@@ -77,13 +80,24 @@ void meanAndStandardError(const std::vector<double>& v, double& mean, double& se
   se = std::sqrt(sq / (static_cast<double>(v.size()) - 1.0) / static_cast<double>(v.size()));
 }
 
-TEST(ContactBand, FloorAtASpheresContactHasThePathTracersMean) {
+// The band's mean of `seeds` rcache renders at `spp` against the path tracer's, in standard errors.
+// The path tracer's renders, made once for both budgets.
+const std::vector<Image>& pathReferences(const Scene& s) {
+  static const std::vector<Image> refs = [&] {
+    std::vector<Image> r;
+    for (int seed = 0; seed < kRefSeeds; ++seed)
+      r.push_back(test::renderScene(s, test::pathSettings(s), kRefSpp, 101 + seed).image);
+    return r;
+  }();
+  return refs;
+}
+
+void expectContactBandUnbiased(int spp, int seeds) {
   const Scene s = sphereOnFloor();
-  std::vector<Image> refs, renders;
-  for (int seed = 0; seed < kRefSeeds; ++seed)
-    refs.push_back(test::renderScene(s, test::pathSettings(s), kRefSpp, 101 + seed).image);
-  for (int seed = 0; seed < kSeeds; ++seed) {
-    const auto r = test::renderScene(s, test::rcacheSettings(s), kSpp, 1 + seed);
+  const std::vector<Image>& refs = pathReferences(s);
+  std::vector<Image> renders;
+  for (int seed = 0; seed < seeds; ++seed) {
+    const auto r = test::renderScene(s, test::rcacheSettings(s), spp, 1 + seed);
     if (seed == 0) EXPECT_EQ(test::statText(r.stats, "env_cache"), "whole environment cached");
     renders.push_back(r.image);
   }
@@ -93,11 +107,15 @@ TEST(ContactBand, FloorAtASpheresContactHasThePathTracersMean) {
   meanAndStandardError(bandMeans(renders, band), mean, se);
   meanAndStandardError(bandMeans(refs, band), refMean, refSe);
   const double combined = std::sqrt(se * se + refSe * refSe);
-  std::printf("contact band (%zu px): rcache / path tracer %.4f, z %.2f (standard error %.4f of the mean)\n",
-              band.size(), mean / refMean, (mean - refMean) / combined, combined / refMean);
+  std::printf("contact band (%zu px), %d spp: rcache / path tracer %.4f, z %.2f (standard error %.4f of the mean)\n",
+              band.size(), spp, mean / refMean, (mean - refMean) / combined, combined / refMean);
   // Unbiased: within 4 standard errors, no slack.
   EXPECT_LT(std::fabs(mean - refMean), 4.0 * combined);
 }
+
+TEST(ContactBand, FloorAtASpheresContactHasThePathTracersMeanAt16Spp) { expectContactBandUnbiased(16, 12); }
+
+TEST(ContactBand, FloorAtASpheresContactHasThePathTracersMeanAt64Spp) { expectContactBandUnbiased(64, 12); }
 
 }  // namespace
 }  // namespace rc
