@@ -538,11 +538,14 @@ RecordInfo CacheEngine::clampRecord(const CacheKey& key, const ShadePoint& cand,
   const float R = inv > 0.0 ? static_cast<float>(S / inv) : INFINITY;
   info.p = cand.hit.p;
   info.frame = cand.geometryFrame;
-  // Gradient limit (as Mitsuba's irrcache clamps R by E/|∇E|): over the influence radius the
-  // first-order change of the record's coefficients may not exceed their own size,
-  // ‖∇Λ‖·a·R ≤ ‖Λ‖ (norms over all coefficients and channels, so the higher bands of a glossy
-  // record are held to the same bound as its mean), so gradients near touching geometry cannot
-  // extrapolate to negative or exploding radiance.
+  // Gradient limit R ≤ ‖Λ‖/‖∇Λ‖ (Křivánek et al. 2006; Mitsuba 0.5's irrcache clamps R by
+  // E/|∇E| the same way): R is, like Ward's split-sphere distance, the length over which the
+  // record's light changes by its own size, so a bounds the first-order change over the reach
+  // a·R to a share a of it. Norms run over all coefficients and channels, so the higher bands of
+  // a glossy record are held to the same bound as its mean. Where an object touches a surface the
+  // light rises steeply and then levels off (occlusion, not linear in distance): a looser bound
+  // (‖∇Λ‖·a·R ≤ ‖Λ‖) let records reach across the contact with a
+  // slope valid only beside it, brightening the contact (bench/RESULTS.md, contact17).
   float Rg = INFINITY;
   const size_t coeffs = 3 * static_cast<size_t>(key.order) * key.order;
   if (params_.gradients) {
@@ -551,7 +554,7 @@ RecordInfo CacheEngine::clampRecord(const CacheKey& key, const ShadePoint& cand,
       l2 += double(lambda[o]) * lambda[o];
       g2 += double(gradT[o]) * gradT[o] + double(gradB[o]) * gradB[o];
     }
-    if (g2 > 0) Rg = static_cast<float>(std::sqrt(l2 / g2) / aForLevel(key.level));
+    if (g2 > 0) Rg = static_cast<float>(std::sqrt(l2 / g2));
   }
   // r_min and r_max bound the influence radius a·R_i in pixel footprints (scaled like a at the
   // coarser secondary caches): a record never covers less than r_min pixels (below that a
@@ -562,7 +565,8 @@ RecordInfo CacheEngine::clampRecord(const CacheKey& key, const ShadePoint& cand,
   // The pixel-footprint floor r_min can push R past the gradient limit (records in corners,
   // where R is tiny and the gradient ~Λ/R): scale the gradient down so the bound holds at the
   // radius actually used. Without this, a record 3 px wide extrapolates a gradient meant for a
-  // sub-pixel neighbourhood and paints isolated pixels many times too bright.
+  // sub-pixel neighbourhood and paints isolated pixels many times too bright (and at a contact,
+  // where the floored records are the ones next to it, carries its steep slope past the contact).
   if (info.R > Rg) {
     const float s = Rg / info.R;
     for (size_t o = 0; o < coeffs; ++o) {
