@@ -1,0 +1,234 @@
+// The diffuse lanes of a bounce shaded in passes over arrays (render/diffuse_shading.h).
+//
+// Each pass's body is one inline loop compiled three times (baseline x86-64, AVX2, AVX-512) and
+// picked at run time (core/simd_level.h), as EnvmapLight::lookupAdd is. Each lane must compute what
+// the scalar code computes, bit for bit (tests/render/diffuse_shading_test.cpp checks every version
+// the CPU runs): no version may contract a·b + c into an FMA — the targets named here do not include
+// FMA, and CMakeLists.txt builds this file with -ffp-contract=off as well. Its other two flags change
+// no value: -fno-math-errno lets sqrt be the instruction alone, and -fno-trapping-math lets the
+// selects evaluate both of their sides (a division by a zero radius), which is what makes the loop
+// bodies free of branches and so vectorisable.
+#include "render/diffuse_shading.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "bsdf/diffuse_lobe.h"
+#include "bsdf/warp.h"
+#include "render/direct_light.h"
+
+namespace rc {
+
+namespace {
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define RC_HAVE_SIMD_VERSIONS 1
+#endif
+
+template <class T>
+void fit(std::vector<T>& v, size_t n) {
+  if (v.size() < n) v.resize(n);
+}
+
+// ---- The light sample: lightSampleUnshadowed's BSDF value, density and MIS weight ----
+[[gnu::always_inline]] inline void lightTermsLoop(DiffuseGroup& g) {
+  const size_t n = g.size;
+  const float* __restrict nx = g.nx.data();
+  const float* __restrict ny = g.ny.data();
+  const float* __restrict nz = g.nz.data();
+  const float* __restrict woZ = g.woZ.data();
+  const float* __restrict rhoR = g.rhoR.data();
+  const float* __restrict rhoG = g.rhoG.data();
+  const float* __restrict rhoB = g.rhoB.data();
+  const float* __restrict thrR = g.thrR.data();
+  const float* __restrict thrG = g.thrG.data();
+  const float* __restrict thrB = g.thrB.data();
+  const float* __restrict lx = g.lightX.data();
+  const float* __restrict ly = g.lightY.data();
+  const float* __restrict lz = g.lightZ.data();
+  const float* __restrict lr = g.lightR.data();
+  const float* __restrict lg = g.lightG.data();
+  const float* __restrict lb = g.lightB.data();
+  const float* __restrict lpdf = g.lightPdf.data();
+  const float* __restrict ldelta = g.lightDelta.data();
+  const float* __restrict lon = g.lightOn.data();
+  float* __restrict outR = g.valueR.data();
+  float* __restrict outG = g.valueG.data();
+  float* __restrict outB = g.valueB.data();
+  float* __restrict outOn = g.valueOn.data();
+// (Plain floats and nested selects of floats only: a Color local, or a bool combined with & or &&,
+// keeps GCC 12 from vectorising the loop.)
+#pragma GCC ivdep
+  for (size_t k = 0; k < n; ++k) {
+    // frame.toLocal(wi).z: the lobe reads nothing else of the local direction.
+    const float wiZ = lx[k] * nx[k] + ly[k] * ny[k] + lz[k] * nz[k];
+    const float c = lambertCosineTerm(woZ[k], wiZ);
+    const float fR = rhoR[k] * c, fG = rhoG[k] * c, fB = rhoB[k] * c;  // DiffuseBsdf::eval; its pdf is c
+    // f·Le/pdf, MIS-weighted unless the light is a delta one; then times the throughput.
+    const float w = powerHeuristic(lpdf[k], c);
+    const bool weighted = ldelta[k] == 0.0f;
+    const float vR = fR * lr[k], vG = fG * lg[k], vB = fB * lb[k];
+    outR[k] = thrR[k] * (weighted ? vR * w : vR);
+    outG[k] = thrG[k] * (weighted ? vG * w : vG);
+    outB[k] = thrB[k] * (weighted ? vB * w : vB);
+    const float fMax = maxComponent(fR, fG, fB), radianceMax = maxComponent(lr[k], lg[k], lb[k]);
+    outOn[k] = lon[k] != 0.0f ? (fMax <= 0.0f ? 0.0f : (radianceMax <= 0.0f ? 0.0f : 1.0f)) : 0.0f;
+  }
+}
+
+// ---- The BSDF sample: DiffuseBsdf::sample, the throughput and the world direction ----
+[[gnu::always_inline]] inline void diskLoop(DiffuseGroup& g) {
+  const size_t n = g.size;
+  const float* __restrict u = g.u.data();
+  const float* __restrict v = g.v.data();
+  float* __restrict r = g.r.data();
+  float* __restrict phi = g.phi.data();
+#pragma GCC ivdep
+  for (size_t k = 0; k < n; ++k) {
+    const DiskPolar d = squareToDiskPolar(Vec2(u[k], v[k]));
+    // At the centre r is +0 and φ (0/0) is set to 0: r·cos φ and r·sin φ are then +0, the point
+    // squareToUniformDiskConcentric returns there, with no select left for the next pass.
+    r[k] = d.r;
+    phi[k] = d.centre ? 0.0f : d.phi;
+  }
+}
+
+[[gnu::always_inline]] inline void sampleLoop(DiffuseGroup& g) {
+  const size_t n = g.size;
+  const float* __restrict tx = g.tx.data();
+  const float* __restrict ty = g.ty.data();
+  const float* __restrict tz = g.tz.data();
+  const float* __restrict bx = g.bx.data();
+  const float* __restrict by = g.by.data();
+  const float* __restrict bz = g.bz.data();
+  const float* __restrict nx = g.nx.data();
+  const float* __restrict ny = g.ny.data();
+  const float* __restrict nz = g.nz.data();
+  const float* __restrict woZ = g.woZ.data();
+  const float* __restrict rhoR = g.rhoR.data();
+  const float* __restrict rhoG = g.rhoG.data();
+  const float* __restrict rhoB = g.rhoB.data();
+  const float* __restrict r = g.r.data();
+  const float* __restrict cosPhi = g.cosPhi.data();
+  const float* __restrict sinPhi = g.sinPhi.data();
+  float* __restrict thrR = g.thrR.data();
+  float* __restrict thrG = g.thrG.data();
+  float* __restrict thrB = g.thrB.data();
+  float* __restrict dirX = g.dirX.data();
+  float* __restrict dirY = g.dirY.data();
+  float* __restrict dirZ = g.dirZ.data();
+  float* __restrict pdf = g.pdf.data();
+  float* __restrict extends = g.extends.data();
+#pragma GCC ivdep
+  for (size_t k = 0; k < n; ++k) {
+    // squareToCosineHemisphere from the polar form, as squareToUniformDiskConcentric finishes it.
+    const float px = r[k] * cosPhi[k], py = r[k] * sinPhi[k];
+    const float pz = diskToHemisphereZ(px, py);
+    const float density = squareToCosineHemispherePdf(Vec3(px, py, pz));
+    // The sample's weight is ρ; the wave then ends the path unless the throughput stays finite and > 0.
+    const float tR = thrR[k] * rhoR[k], tG = thrG[k] * rhoG[k], tB = thrB[k] * rhoB[k];
+    thrR[k] = tR;
+    thrG[k] = tG;
+    thrB[k] = tB;
+    // frame.toWorld(wi) = (t·x + b·y) + n·z.
+    dirX[k] = tx[k] * px + bx[k] * py + nx[k] * pz;
+    dirY[k] = ty[k] * px + by[k] * py + ny[k] * pz;
+    dirZ[k] = tz[k] * px + bz[k] * py + nz[k] * pz;
+    pdf[k] = density;
+    // Sampled (wo above, density > 0), then the throughput finite and > 0: its largest component,
+    // zeroed by each test that fails (selects of values: GCC 12 does not vectorise nested selects of
+    // constants here).
+    const float finiteMax = isFinite(tR, tG, tB) ? maxComponent(tR, tG, tB) : 0.0f;
+    const float sampledMax = woZ[k] > 0.0f ? (density > 0.0f ? finiteMax : 0.0f) : 0.0f;
+    extends[k] = sampledMax > 0.0f ? 1.0f : 0.0f;
+  }
+}
+
+// libm's trigonometry per lane: the scalar map's std::cos and std::sin, the same calls.
+void trigonometry(DiffuseGroup& g) {
+  for (size_t k = 0; k < g.size; ++k) {
+    g.cosPhi[k] = std::cos(g.phi[k]);
+    g.sinPhi[k] = std::sin(g.phi[k]);
+  }
+}
+
+// A pass's versions: its loop compiled for baseline x86-64, AVX2 and AVX-512 (or baseline alone).
+struct PassVersions {
+  void (*baseline)(DiffuseGroup&);
+  void (*avx2)(DiffuseGroup&);
+  void (*avx512)(DiffuseGroup&);
+
+  // Runs the version for the narrower of `level` and what this CPU runs.
+  void operator()(SimdLevel level, DiffuseGroup& g) const {
+    const SimdLevel run = std::min(level, cpuSimdLevel());
+    if (run == SimdLevel::Avx512) return avx512(g);
+    if (run == SimdLevel::Avx2) return avx2(g);
+    baseline(g);
+  }
+};
+
+#ifdef RC_HAVE_SIMD_VERSIONS
+#define RC_PASS_VERSIONS(name, loop)                                   \
+  void name##Baseline(DiffuseGroup& g) { loop(g); }                    \
+  [[gnu::target("avx2")]] void name##Avx2(DiffuseGroup& g) { loop(g); } \
+  [[gnu::target("avx512f")]] void name##Avx512(DiffuseGroup& g) { loop(g); } \
+  constexpr PassVersions name{name##Baseline, name##Avx2, name##Avx512};
+#else
+#define RC_PASS_VERSIONS(name, loop)                \
+  void name##Baseline(DiffuseGroup& g) { loop(g); } \
+  constexpr PassVersions name{name##Baseline, name##Baseline, name##Baseline};
+#endif
+RC_PASS_VERSIONS(lightTermsPass, lightTermsLoop)
+RC_PASS_VERSIONS(diskPass, diskLoop)
+RC_PASS_VERSIONS(samplePass, sampleLoop)
+#undef RC_PASS_VERSIONS
+
+}  // namespace
+
+void DiffuseGroup::reset(size_t n) {
+  size = 0;
+  fit(lane, n);
+  fit(hit, n);
+  fit(light, n);
+  for (std::vector<float>* a : {&tx, &ty, &tz, &bx, &by, &bz, &nx, &ny, &nz, &woZ, &rhoR, &rhoG, &rhoB, &thrR, &thrG,
+                                &thrB, &lightX, &lightY, &lightZ, &lightR, &lightG, &lightB, &lightPdf, &lightDelta,
+                                &lightOn, &u, &v, &valueR, &valueG, &valueB, &valueOn, &dirX, &dirY, &dirZ, &pdf,
+                                &extends, &r, &phi, &cosPhi, &sinPhi})
+    fit(*a, n);
+}
+
+size_t DiffuseGroup::add(uint32_t laneId, const Hit& vertex, const Frame& frame, float cosThetaO, const Color& rho,
+                         const Color& throughput, const Vec2& bsdfNumbers) {
+  const size_t k = size++;
+  lane[k] = laneId;
+  hit[k] = &vertex;
+  tx[k] = frame.t.x, ty[k] = frame.t.y, tz[k] = frame.t.z;
+  bx[k] = frame.b.x, by[k] = frame.b.y, bz[k] = frame.b.z;
+  nx[k] = frame.n.x, ny[k] = frame.n.y, nz[k] = frame.n.z;
+  woZ[k] = cosThetaO;
+  rhoR[k] = rho.r, rhoG[k] = rho.g, rhoB[k] = rho.b;
+  thrR[k] = throughput.r, thrG[k] = throughput.g, thrB[k] = throughput.b;
+  lightOn[k] = 0.0f;
+  u[k] = bsdfNumbers.x;
+  v[k] = bsdfNumbers.y;
+  return k;
+}
+
+void DiffuseGroup::setLight(size_t k, const LightSample& sample) {
+  light[k] = sample;
+  lightX[k] = sample.wi.x, lightY[k] = sample.wi.y, lightZ[k] = sample.wi.z;
+  lightR[k] = sample.radiance.r, lightG[k] = sample.radiance.g, lightB[k] = sample.radiance.b;
+  lightPdf[k] = sample.pdf;
+  lightDelta[k] = sample.delta ? 1.0f : 0.0f;
+  lightOn[k] = 1.0f;
+}
+
+void diffuseLightTerms(DiffuseGroup& g, SimdLevel level) { lightTermsPass(level, g); }
+
+void diffuseSampleTerms(DiffuseGroup& g, SimdLevel level) {
+  diskPass(level, g);
+  trigonometry(g);
+  samplePass(level, g);
+}
+
+}  // namespace rc
