@@ -30,53 +30,7 @@ void fit(std::vector<T>& v, size_t n) {
   if (v.size() < n) v.resize(n);
 }
 
-// ---- The light sample: lightSampleUnshadowed's BSDF value, density and MIS weight ----
-[[gnu::always_inline]] inline void lightTermsLoop(DiffuseGroup& g) {
-  const size_t n = g.size;
-  const float* __restrict nx = g.nx.data();
-  const float* __restrict ny = g.ny.data();
-  const float* __restrict nz = g.nz.data();
-  const float* __restrict woZ = g.woZ.data();
-  const float* __restrict rhoR = g.rhoR.data();
-  const float* __restrict rhoG = g.rhoG.data();
-  const float* __restrict rhoB = g.rhoB.data();
-  const float* __restrict thrR = g.thrR.data();
-  const float* __restrict thrG = g.thrG.data();
-  const float* __restrict thrB = g.thrB.data();
-  const float* __restrict lx = g.lightX.data();
-  const float* __restrict ly = g.lightY.data();
-  const float* __restrict lz = g.lightZ.data();
-  const float* __restrict lr = g.lightR.data();
-  const float* __restrict lg = g.lightG.data();
-  const float* __restrict lb = g.lightB.data();
-  const float* __restrict lpdf = g.lightPdf.data();
-  const float* __restrict ldelta = g.lightDelta.data();
-  const float* __restrict lon = g.lightOn.data();
-  float* __restrict outR = g.valueR.data();
-  float* __restrict outG = g.valueG.data();
-  float* __restrict outB = g.valueB.data();
-  float* __restrict outOn = g.valueOn.data();
-// (Plain floats and nested selects of floats only: a Color local, or a bool combined with & or &&,
-// keeps GCC 12 from vectorising the loop.)
-#pragma GCC ivdep
-  for (size_t k = 0; k < n; ++k) {
-    // frame.toLocal(wi).z: the lobe reads nothing else of the local direction.
-    const float wiZ = lx[k] * nx[k] + ly[k] * ny[k] + lz[k] * nz[k];
-    const float c = lambertCosineTerm(woZ[k], wiZ);
-    const float fR = rhoR[k] * c, fG = rhoG[k] * c, fB = rhoB[k] * c;  // DiffuseBsdf::eval; its pdf is c
-    // f·Le/pdf, MIS-weighted unless the light is a delta one; then times the throughput.
-    const float w = powerHeuristic(lpdf[k], c);
-    const bool weighted = ldelta[k] == 0.0f;
-    const float vR = fR * lr[k], vG = fG * lg[k], vB = fB * lb[k];
-    outR[k] = thrR[k] * (weighted ? vR * w : vR);
-    outG[k] = thrG[k] * (weighted ? vG * w : vG);
-    outB[k] = thrB[k] * (weighted ? vB * w : vB);
-    const float fMax = maxComponent(fR, fG, fB), radianceMax = maxComponent(lr[k], lg[k], lb[k]);
-    outOn[k] = lon[k] != 0.0f ? (fMax <= 0.0f ? 0.0f : (radianceMax <= 0.0f ? 0.0f : 1.0f)) : 0.0f;
-  }
-}
-
-// ---- The BSDF sample: DiffuseBsdf::sample, the throughput and the world direction ----
+// ---- The concentric map's polar form (before the trigonometry) ----
 [[gnu::always_inline]] inline void diskLoop(DiffuseGroup& g) {
   const size_t n = g.size;
   const float* __restrict u = g.u.data();
@@ -93,7 +47,10 @@ void fit(std::vector<T>& v, size_t n) {
   }
 }
 
-[[gnu::always_inline]] inline void sampleLoop(DiffuseGroup& g) {
+// ---- The light sample's value and the BSDF sample, one pass ----
+// (Plain floats, and selects of values rather than of constants or of bools combined with & or &&:
+// a Color local, either of those, or std::fmax's || keeps GCC 12 from vectorising the loop.)
+[[gnu::always_inline]] inline void shadingLoop(DiffuseGroup& g) {
   const size_t n = g.size;
   const float* __restrict tx = g.tx.data();
   const float* __restrict ty = g.ty.data();
@@ -108,12 +65,25 @@ void fit(std::vector<T>& v, size_t n) {
   const float* __restrict rhoR = g.rhoR.data();
   const float* __restrict rhoG = g.rhoG.data();
   const float* __restrict rhoB = g.rhoB.data();
+  const float* __restrict lx = g.lightX.data();
+  const float* __restrict ly = g.lightY.data();
+  const float* __restrict lz = g.lightZ.data();
+  const float* __restrict lr = g.lightR.data();
+  const float* __restrict lg = g.lightG.data();
+  const float* __restrict lb = g.lightB.data();
+  const float* __restrict lpdf = g.lightPdf.data();
+  const float* __restrict ldelta = g.lightDelta.data();
+  const float* __restrict lon = g.lightOn.data();
   const float* __restrict r = g.r.data();
   const float* __restrict cosPhi = g.cosPhi.data();
   const float* __restrict sinPhi = g.sinPhi.data();
   float* __restrict thrR = g.thrR.data();
   float* __restrict thrG = g.thrG.data();
   float* __restrict thrB = g.thrB.data();
+  float* __restrict valueR = g.valueR.data();
+  float* __restrict valueG = g.valueG.data();
+  float* __restrict valueB = g.valueB.data();
+  float* __restrict valueOn = g.valueOn.data();
   float* __restrict dirX = g.dirX.data();
   float* __restrict dirY = g.dirY.data();
   float* __restrict dirZ = g.dirZ.data();
@@ -121,7 +91,20 @@ void fit(std::vector<T>& v, size_t n) {
   float* __restrict extends = g.extends.data();
 #pragma GCC ivdep
   for (size_t k = 0; k < n; ++k) {
-    // squareToCosineHemisphere from the polar form, as squareToUniformDiskConcentric finishes it.
+    // -- Light sample (lightSampleUnshadowed): frame.toLocal(wi).z is all the lobe reads of wi.
+    const float c = lambertCosineTerm(woZ[k], lx[k] * nx[k] + ly[k] * ny[k] + lz[k] * nz[k]);
+    const float fR = rhoR[k] * c, fG = rhoG[k] * c, fB = rhoB[k] * c;  // DiffuseBsdf::eval; its pdf is c
+    // f·Le/pdf, MIS-weighted unless the light is a delta one; then times the throughput.
+    const float w = powerHeuristic(lpdf[k], c);
+    const bool weighted = ldelta[k] == 0.0f;
+    const float vR = fR * lr[k], vG = fG * lg[k], vB = fB * lb[k];
+    valueR[k] = thrR[k] * (weighted ? vR * w : vR);
+    valueG[k] = thrG[k] * (weighted ? vG * w : vG);
+    valueB[k] = thrB[k] * (weighted ? vB * w : vB);
+    const float fMax = maxComponent(fR, fG, fB), radianceMax = maxComponent(lr[k], lg[k], lb[k]);
+    valueOn[k] = lon[k] != 0.0f ? (fMax <= 0.0f ? 0.0f : (radianceMax <= 0.0f ? 0.0f : 1.0f)) : 0.0f;
+    // -- BSDF sample (DiffuseBsdf::sample): squareToCosineHemisphere from the polar form, as
+    // squareToUniformDiskConcentric finishes it.
     const float px = r[k] * cosPhi[k], py = r[k] * sinPhi[k];
     const float pz = diskToHemisphereZ(px, py);
     const float density = squareToCosineHemispherePdf(Vec3(px, py, pz));
@@ -136,8 +119,7 @@ void fit(std::vector<T>& v, size_t n) {
     dirZ[k] = tz[k] * px + bz[k] * py + nz[k] * pz;
     pdf[k] = density;
     // Sampled (wo above, density > 0), then the throughput finite and > 0: its largest component,
-    // zeroed by each test that fails (selects of values: GCC 12 does not vectorise nested selects of
-    // constants here).
+    // zeroed by each test that fails.
     const float finiteMax = isFinite(tR, tG, tB) ? maxComponent(tR, tG, tB) : 0.0f;
     const float sampledMax = woZ[k] > 0.0f ? (density > 0.0f ? finiteMax : 0.0f) : 0.0f;
     extends[k] = sampledMax > 0.0f ? 1.0f : 0.0f;
@@ -178,9 +160,8 @@ struct PassVersions {
   void name##Baseline(DiffuseGroup& g) { loop(g); } \
   constexpr PassVersions name{name##Baseline, name##Baseline, name##Baseline};
 #endif
-RC_PASS_VERSIONS(lightTermsPass, lightTermsLoop)
 RC_PASS_VERSIONS(diskPass, diskLoop)
-RC_PASS_VERSIONS(samplePass, sampleLoop)
+RC_PASS_VERSIONS(shadingPass, shadingLoop)
 #undef RC_PASS_VERSIONS
 
 }  // namespace
@@ -223,12 +204,10 @@ void DiffuseGroup::setLight(size_t k, const LightSample& sample) {
   lightOn[k] = 1.0f;
 }
 
-void diffuseLightTerms(DiffuseGroup& g, SimdLevel level) { lightTermsPass(level, g); }
-
-void diffuseSampleTerms(DiffuseGroup& g, SimdLevel level) {
+void diffuseShadingTerms(DiffuseGroup& g, SimdLevel level) {
   diskPass(level, g);
   trigonometry(g);
-  samplePass(level, g);
+  shadingPass(level, g);
 }
 
 }  // namespace rc

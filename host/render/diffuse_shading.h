@@ -35,13 +35,13 @@ struct DiffuseGroup {
   // is none: no emitter, or a sample that lightSampleUnshadowed drops before evaluating the BSDF).
   std::vector<float> lightX, lightY, lightZ, lightR, lightG, lightB, lightPdf, lightDelta, lightOn;
   std::vector<float> u, v;  // the BSDF sample's 2-D number
-  // Out of diffuseLightTerms: what the light sample adds if its shadow ray is unoccluded (the
+  // Out of diffuseShadingTerms: what the light sample adds if its shadow ray is unoccluded (the
   // throughput included), and whether it adds anything (1) — lightSampleUnshadowed's value and result.
   std::vector<float> valueR, valueG, valueB, valueOn;
-  // Out of diffuseSampleTerms: the sampled world direction and its density, the throughput times the
-  // sample's weight (thr*), and whether the path goes on along it (1: sampled, throughput finite and > 0).
+  // Also out of it: the sampled world direction and its density, the throughput times the sample's
+  // weight (in thr*), and whether the path goes on along it (1: sampled, throughput finite and > 0).
   std::vector<float> dirX, dirY, dirZ, pdf, extends;
-  // Scratch of diffuseSampleTerms: the concentric map's polar form and its trigonometry.
+  // Scratch of diffuseShadingTerms: the concentric map's polar form and its trigonometry.
   std::vector<float> r, phi, cosPhi, sinPhi;
 
   // Room for n entries (kept between waves) and size 0.
@@ -52,10 +52,9 @@ struct DiffuseGroup {
   void setLight(size_t k, const LightSample& sample);
 };
 
-// lightSampleUnshadowed's value for every entry (before the shadow ray; the light sample MIS-weighted
-// as one light sample beside one BSDF sample), times the entry's throughput.
-void diffuseLightTerms(DiffuseGroup& g, SimdLevel level = SimdLevel::Avx512);
-// DiffuseBsdf::sample from the entry's numbers, the throughput times its weight, and the world direction.
-void diffuseSampleTerms(DiffuseGroup& g, SimdLevel level = SimdLevel::Avx512);
+// For every entry: lightSampleUnshadowed's value (before the shadow ray; the light sample MIS-weighted
+// as one light sample beside one BSDF sample) times the entry's throughput, then DiffuseBsdf::sample
+// from the entry's numbers, the throughput times its weight, and the world direction.
+void diffuseShadingTerms(DiffuseGroup& g, SimdLevel level = SimdLevel::Avx512);
 
 }  // namespace rc

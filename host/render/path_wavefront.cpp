@@ -146,18 +146,16 @@ class BounceShader {
   void shadeDiffuseGroup() {
     DiffuseGroup& g = w_.diffuse;
     if (g.size == 0) return;
-    diffuseLightTerms(g);
+    diffuseShadingTerms(g);
     for (size_t k = 0; k < g.size; ++k) {
-      if (g.valueOn[k] == 0.0f) continue;
-      w_.shadowRays[shadows] = shadowRay(*g.hit[k], g.light[k]);
-      w_.shadowValue[shadows] = Color(g.valueR[k], g.valueG[k], g.valueB[k]);
-      w_.shadowLane[shadows] = g.lane[k];
-      ++shadows;
-    }
-    diffuseSampleTerms(g);
-    for (size_t k = 0; k < g.size; ++k) {
-      if (g.extends[k] == 0.0f) continue;
       const uint32_t i = g.lane[k];
+      if (g.valueOn[k] != 0.0f) {
+        w_.shadowRays[shadows] = shadowRay(*g.hit[k], g.light[k]);
+        w_.shadowValue[shadows] = Color(g.valueR[k], g.valueG[k], g.valueB[k]);
+        w_.shadowLane[shadows] = i;
+        ++shadows;
+      }
+      if (g.extends[k] == 0.0f) continue;
       w_.throughput[i] = Color(g.thrR[k], g.thrG[k], g.thrB[k]);
       w_.continues[i] = continueAlong(i, *g.hit[k], Vec3(g.dirX[k], g.dirY[k], g.dirZ[k]), g.pdf[k], false, rngs_[i]);
     }
