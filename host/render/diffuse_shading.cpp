@@ -52,43 +52,20 @@ void fit(std::vector<T>& v, size_t n) {
 // a Color local, either of those, or std::fmax's || keeps GCC 12 from vectorising the loop.)
 [[gnu::always_inline]] inline void shadingLoop(DiffuseGroup& g) {
   const size_t n = g.size;
-  const float* __restrict tx = g.tx.data();
-  const float* __restrict ty = g.ty.data();
-  const float* __restrict tz = g.tz.data();
-  const float* __restrict bx = g.bx.data();
-  const float* __restrict by = g.by.data();
-  const float* __restrict bz = g.bz.data();
-  const float* __restrict nx = g.nx.data();
-  const float* __restrict ny = g.ny.data();
-  const float* __restrict nz = g.nz.data();
-  const float* __restrict woZ = g.woZ.data();
-  const float* __restrict rhoR = g.rhoR.data();
-  const float* __restrict rhoG = g.rhoG.data();
-  const float* __restrict rhoB = g.rhoB.data();
-  const float* __restrict lx = g.lightX.data();
-  const float* __restrict ly = g.lightY.data();
-  const float* __restrict lz = g.lightZ.data();
-  const float* __restrict lr = g.lightR.data();
-  const float* __restrict lg = g.lightG.data();
-  const float* __restrict lb = g.lightB.data();
-  const float* __restrict lpdf = g.lightPdf.data();
-  const float* __restrict ldelta = g.lightDelta.data();
-  const float* __restrict lon = g.lightOn.data();
-  const float* __restrict r = g.r.data();
-  const float* __restrict cosPhi = g.cosPhi.data();
-  const float* __restrict sinPhi = g.sinPhi.data();
-  float* __restrict thrR = g.thrR.data();
-  float* __restrict thrG = g.thrG.data();
-  float* __restrict thrB = g.thrB.data();
-  float* __restrict valueR = g.valueR.data();
-  float* __restrict valueG = g.valueG.data();
-  float* __restrict valueB = g.valueB.data();
-  float* __restrict valueOn = g.valueOn.data();
-  float* __restrict dirX = g.dirX.data();
-  float* __restrict dirY = g.dirY.data();
-  float* __restrict dirZ = g.dirZ.data();
-  float* __restrict pdf = g.pdf.data();
-  float* __restrict extends = g.extends.data();
+  const float *__restrict tx = g.tx.data(), *__restrict ty = g.ty.data(), *__restrict tz = g.tz.data();
+  const float *__restrict bx = g.bx.data(), *__restrict by = g.by.data(), *__restrict bz = g.bz.data();
+  const float *__restrict nx = g.nx.data(), *__restrict ny = g.ny.data(), *__restrict nz = g.nz.data();
+  const float *__restrict woZ = g.woZ.data();
+  const float *__restrict rhoR = g.rhoR.data(), *__restrict rhoG = g.rhoG.data(), *__restrict rhoB = g.rhoB.data();
+  const float *__restrict lx = g.lightX.data(), *__restrict ly = g.lightY.data(), *__restrict lz = g.lightZ.data();
+  const float *__restrict lr = g.lightR.data(), *__restrict lg = g.lightG.data(), *__restrict lb = g.lightB.data();
+  const float *__restrict lpdf = g.lightPdf.data(), *__restrict ldelta = g.lightDelta.data(), *__restrict lon = g.lightOn.data();
+  const float *__restrict r = g.r.data(), *__restrict cosPhi = g.cosPhi.data(), *__restrict sinPhi = g.sinPhi.data();
+  float *__restrict thrR = g.thrR.data(), *__restrict thrG = g.thrG.data(), *__restrict thrB = g.thrB.data();
+  float *__restrict valueR = g.valueR.data(), *__restrict valueG = g.valueG.data(), *__restrict valueB = g.valueB.data();
+  float *__restrict valueOn = g.valueOn.data();
+  float *__restrict dirX = g.dirX.data(), *__restrict dirY = g.dirY.data(), *__restrict dirZ = g.dirZ.data();
+  float *__restrict pdf = g.pdf.data(), *__restrict extends = g.extends.data();
 #pragma GCC ivdep
   for (size_t k = 0; k < n; ++k) {
     // -- Light sample (lightSampleUnshadowed): frame.toLocal(wi).z is all the lobe reads of wi.
@@ -176,32 +153,6 @@ void DiffuseGroup::reset(size_t n) {
                                 &lightOn, &u, &v, &valueR, &valueG, &valueB, &valueOn, &dirX, &dirY, &dirZ, &pdf,
                                 &extends, &r, &phi, &cosPhi, &sinPhi})
     fit(*a, n);
-}
-
-size_t DiffuseGroup::add(uint32_t laneId, const Hit& vertex, const Frame& frame, float cosThetaO, const Color& rho,
-                         const Color& throughput, const Vec2& bsdfNumbers) {
-  const size_t k = size++;
-  lane[k] = laneId;
-  hit[k] = &vertex;
-  tx[k] = frame.t.x, ty[k] = frame.t.y, tz[k] = frame.t.z;
-  bx[k] = frame.b.x, by[k] = frame.b.y, bz[k] = frame.b.z;
-  nx[k] = frame.n.x, ny[k] = frame.n.y, nz[k] = frame.n.z;
-  woZ[k] = cosThetaO;
-  rhoR[k] = rho.r, rhoG[k] = rho.g, rhoB[k] = rho.b;
-  thrR[k] = throughput.r, thrG[k] = throughput.g, thrB[k] = throughput.b;
-  lightOn[k] = 0.0f;
-  u[k] = bsdfNumbers.x;
-  v[k] = bsdfNumbers.y;
-  return k;
-}
-
-void DiffuseGroup::setLight(size_t k, const LightSample& sample) {
-  light[k] = sample;
-  lightX[k] = sample.wi.x, lightY[k] = sample.wi.y, lightZ[k] = sample.wi.z;
-  lightR[k] = sample.radiance.r, lightG[k] = sample.radiance.g, lightB[k] = sample.radiance.b;
-  lightPdf[k] = sample.pdf;
-  lightDelta[k] = sample.delta ? 1.0f : 0.0f;
-  lightOn[k] = 1.0f;
 }
 
 void diffuseShadingTerms(DiffuseGroup& g, SimdLevel level) {

@@ -46,11 +46,38 @@ struct DiffuseGroup {
 
   // Room for n entries (kept between waves) and size 0.
   void reset(size_t n);
-  // Appends an entry with its inputs; the light sample's fields are set by setLight.
+  // Appends an entry with its inputs; the light sample's fields are set by setLight. (Inline: every
+  // diffuse vertex calls both.)
   size_t add(uint32_t laneId, const Hit& vertex, const Frame& frame, float cosThetaO, const Color& rho,
              const Color& throughput, const Vec2& bsdfNumbers);
   void setLight(size_t k, const LightSample& sample);
 };
+
+inline size_t DiffuseGroup::add(uint32_t laneId, const Hit& vertex, const Frame& frame, float cosThetaO,
+                                const Color& rho, const Color& throughput, const Vec2& bsdfNumbers) {
+  const size_t k = size++;
+  lane[k] = laneId;
+  hit[k] = &vertex;
+  tx[k] = frame.t.x, ty[k] = frame.t.y, tz[k] = frame.t.z;
+  bx[k] = frame.b.x, by[k] = frame.b.y, bz[k] = frame.b.z;
+  nx[k] = frame.n.x, ny[k] = frame.n.y, nz[k] = frame.n.z;
+  woZ[k] = cosThetaO;
+  rhoR[k] = rho.r, rhoG[k] = rho.g, rhoB[k] = rho.b;
+  thrR[k] = throughput.r, thrG[k] = throughput.g, thrB[k] = throughput.b;
+  lightOn[k] = 0.0f;
+  u[k] = bsdfNumbers.x;
+  v[k] = bsdfNumbers.y;
+  return k;
+}
+
+inline void DiffuseGroup::setLight(size_t k, const LightSample& sample) {
+  light[k] = sample;
+  lightX[k] = sample.wi.x, lightY[k] = sample.wi.y, lightZ[k] = sample.wi.z;
+  lightR[k] = sample.radiance.r, lightG[k] = sample.radiance.g, lightB[k] = sample.radiance.b;
+  lightPdf[k] = sample.pdf;
+  lightDelta[k] = sample.delta ? 1.0f : 0.0f;
+  lightOn[k] = 1.0f;
+}
 
 // For every entry: lightSampleUnshadowed's value (before the shadow ray; the light sample MIS-weighted
 // as one light sample beside one BSDF sample) times the entry's throughput, then DiffuseBsdf::sample

@@ -101,7 +101,8 @@ class BounceShader {
   // the segment found, queues the vertex's shadow ray, and marks the lane (w.continues) for the next
   // bounce unless its path ends here. A diffuse vertex joins the bounce's diffuse group instead,
   // which shadeDiffuseGroup shades after the last lane.
-  void shade(uint32_t i, const Hit& found) {
+  // (Always inline, as continueAlong: per lane, a call costs more than the function does in envmap_product.)
+  [[gnu::always_inline]] void shade(uint32_t i, const Hit& found) {
     w_.continues[i] = 0;
     const Ray& ray = w_.rays[i];
     // Hidden emitters let the camera ray through (render/hidden_emitters.h); `found` stays uncopied otherwise.
@@ -206,7 +207,7 @@ class BounceShader {
 
   // The lane's next segment from `hit` along world direction `dir` (sampled with density `pdf`), then
   // Russian roulette: true when the path continues.
-  bool continueAlong(uint32_t i, const Hit& hit, const Vec3& dir, float pdf, bool delta, Rng& rng) {
+  [[gnu::always_inline]] bool continueAlong(uint32_t i, const Hit& hit, const Vec3& dir, float pdf, bool delta, Rng& rng) {
     Color& throughput = w_.throughput[i];
     w_.prevP[i] = hit.p;
     w_.prevPdf[i] = pdf;
