@@ -51,6 +51,14 @@ struct BsdfSample {
   float eta = 1.0f;     // relative IOR crossed (dielectric transmission), else 1
 };
 
+// Which BSDFs a wave of the path tracer shades as a group in vector passes (render/diffuse_shading.h),
+// with the parameters those passes read; None: the lane is shaded through the virtual calls below.
+enum class BsdfBatchKind : uint8_t { None, Diffuse };
+struct BsdfBatchParams {
+  BsdfBatchKind kind = BsdfBatchKind::None;
+  Color reflectance{0.0f};  // Diffuse: ρ
+};
+
 class Bsdf {
  public:
   virtual ~Bsdf() = default;
@@ -66,6 +74,9 @@ class Bsdf {
   virtual std::optional<BsdfSample> sample(const Vec3& wo, float u1, const Vec2& u2) const = 0;
 
   virtual uint32_t lobes() const = 0;  // BsdfLobe bits present
+  // Set only by a BSDF that is the same everywhere, keeps the hit's frame and has no tint: its
+  // batched shading then needs nothing but these parameters.
+  virtual BsdfBatchParams batchParams() const { return {}; }
   bool hasDelta() const { return lobes() & kLobeDelta; }
   bool isDiffuseOnly() const { return lobes() == kLobeDiffuse; }
 

@@ -6,6 +6,7 @@
 //
 // f = ρ/π for wo.z > 0 and wi.z > 0; sampled with the cosine-weighted hemisphere (weight = ρ).
 #include "bsdf/bsdf_params.h"
+#include "bsdf/diffuse_lobe.h"
 #include "bsdf/plugins.h"
 #include "bsdf/warp.h"
 
@@ -16,14 +17,8 @@ class DiffuseBsdf final : public Bsdf {
  public:
   explicit DiffuseBsdf(const Color& reflectance) : reflectance_(reflectance) {}
 
-  Color eval(const Vec3& wo, const Vec3& wi) const override {
-    if (!(wo.z > 0.0f && wi.z > 0.0f)) return Color(0.0f);
-    return reflectance_ * (kInvPi * wi.z);
-  }
-  float pdf(const Vec3& wo, const Vec3& wi) const override {
-    if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
-    return squareToCosineHemispherePdf(wi);
-  }
+  Color eval(const Vec3& wo, const Vec3& wi) const override { return reflectance_ * lambertCosineTerm(wo.z, wi.z); }
+  float pdf(const Vec3& wo, const Vec3& wi) const override { return lambertCosineTerm(wo.z, wi.z); }
   std::optional<BsdfSample> sample(const Vec3& wo, float, const Vec2& u2) const override {
     if (!(wo.z > 0.0f)) return std::nullopt;
     BsdfSample s;
@@ -35,6 +30,7 @@ class DiffuseBsdf final : public Bsdf {
     return s;
   }
   uint32_t lobes() const override { return kLobeDiffuse; }
+  BsdfBatchParams batchParams() const override { return BsdfBatchParams{BsdfBatchKind::Diffuse, reflectance_}; }
   std::string parameterKey() const override { return "diffuse(reflectance=" + hexColor(reflectance_) + ")"; }
   std::string typeName() const override { return "diffuse"; }
 

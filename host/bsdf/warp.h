@@ -5,21 +5,34 @@
 
 namespace rc {
 
-// Shirley–Chiu concentric map of [0,1)² onto the unit disk.
-inline Vec2 squareToUniformDiskConcentric(const Vec2& s) {
+// Shirley–Chiu concentric map of [0,1)² onto the unit disk, in polar form: the point is
+// (r·cos φ, r·sin φ), and the origin where `centre` (r = 0 there, φ undefined). Split from the
+// cosine and sine so that a batched caller (render/diffuse_shading.h) computes r and φ in vector
+// passes and only the trigonometry per lane, with the same arithmetic as the scalar map below.
+struct DiskPolar {
+  float r, phi;
+  bool centre;
+};
+inline DiskPolar squareToDiskPolar(const Vec2& s) {
   const float x = 2.0f * s.x - 1.0f, y = 2.0f * s.y - 1.0f;
-  if (x == 0.0f && y == 0.0f) return Vec2(0.0f);
   const bool quadrant13 = std::fabs(x) < std::fabs(y);
   const float r = quadrant13 ? y : x, rp = quadrant13 ? x : y;
-  float phi = 0.25f * kPi * rp / r;
-  if (quadrant13) phi = 0.5f * kPi - phi;
-  return Vec2(r * std::cos(phi), r * std::sin(phi));
+  const float phi = 0.25f * kPi * rp / r;
+  return DiskPolar{r, quadrant13 ? 0.5f * kPi - phi : phi, x == 0.0f && y == 0.0f};
 }
+
+inline Vec2 squareToUniformDiskConcentric(const Vec2& s) {
+  const DiskPolar d = squareToDiskPolar(s);
+  if (d.centre) return Vec2(0.0f);
+  return Vec2(d.r * std::cos(d.phi), d.r * std::sin(d.phi));
+}
+
+// The height over the unit disk's point p of the hemisphere it projects onto.
+inline float diskToHemisphereZ(float px, float py) { return std::sqrt(fmaxInline(0.0f, 1.0f - px * px - py * py)); }
 
 inline Vec3 squareToCosineHemisphere(const Vec2& s) {
   const Vec2 p = squareToUniformDiskConcentric(s);
-  const float z = std::sqrt(fmaxInline(0.0f, 1.0f - p.x * p.x - p.y * p.y));
-  return Vec3(p.x, p.y, z);
+  return Vec3(p.x, p.y, diskToHemisphereZ(p.x, p.y));
 }
 
 inline float squareToCosineHemispherePdf(const Vec3& v) { return kInvPi * v.z; }

@@ -29,12 +29,12 @@ Color emitted(const Scene& scene, const Hit& hit, const Vec3& wo);
 // only part of the scene's light: emitterMis counts what the sampler's lights emit).
 Color emitted(const std::vector<Emitter>& emitters, const Hit& hit, const Vec3& wo);
 
-// Power heuristic (β = 2) weight of strategy a against b.
+// Power heuristic (β = 2) weight of strategy a against b. Nested selects rather than early returns:
+// the wave's vector pass (render/diffuse_shading.h) runs them as they are, scalar code still divides
+// only where a > 0.
 inline float powerHeuristic(float pdfA, float pdfB) {
   const float a = pdfA * pdfA, b = pdfB * pdfB;
-  if (!(a > 0.0f)) return 0.0f;
-  if (std::isinf(a)) return 1.0f;
-  return a / (a + b);
+  return a > 0.0f ? (std::isinf(a) ? 1.0f : a / (a + b)) : 0.0f;
 }
 
 // BSDF-sampling strategy's contribution once the sampled ray (from `from`, world direction `dirWorld`)

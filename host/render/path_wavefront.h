@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/rng.h"
+#include "render/diffuse_shading.h"
 #include "render/integrator.h"
 #include "render/light_sampler.h"
 
@@ -26,6 +27,8 @@ struct PathWave {
   std::vector<float> eta, prevPdf;
   std::vector<uint8_t> prevDelta;
   std::vector<uint32_t> active, next;  // lanes still extending their path
+  std::vector<uint8_t> continues;      // per lane: 1 when this bounce extends its path
+  DiffuseGroup diffuse;                // this bounce's diffuse vertices, shaded as one group
   // This bounce's shadow rays and what each adds to its lane if unoccluded.
   std::vector<Ray> shadowRays;
   std::vector<Color> shadowValue;

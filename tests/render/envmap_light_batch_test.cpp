@@ -2,20 +2,16 @@
 // scalar lookup() it must reproduce bit for bit, on every instruction-set version this CPU runs.
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <iostream>
 
+#include "common/float_bits.h"
 #include "core/rng.h"
 #include "render/envmap_light.h"
 
 namespace rc {
 namespace {
 
-uint32_t bits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
+using test::bits;
 
 // A map with a smooth gradient, a bright texel and a dark column at the seam, rotated so that the
 // map's frame is not the world's.
