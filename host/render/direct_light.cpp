@@ -142,7 +142,7 @@ Color directLight(const RenderContext& ctx, const Hit& hit, const Frame& frame, 
   Color L = lightStrategyMis(ctx, hit, frame, woLocal, bsdf, rng, lightSamples);
   const Vec2 u = rng.next2D();
   const float uLobe = rng.nextFloat();
-  if (ctx.lights.empty()) return L;
+  if (!ctx.lights.emitsLight()) return L;  // black lights: the BSDF ray could find no emission
   const std::optional<BsdfSample> bs = bsdf.sample(woLocal, uLobe, u);
   if (!bs || maxComponent(bs->weight) <= 0.0f) return L;
   const Vec3 dir = frame.toWorld(bs->wi);

@@ -188,7 +188,7 @@ class BounceShader {
     rng.nextFloat();  // the lobe's number: the diffuse lobe is the only one
     const Frame frame = hit.frame();
     const size_t k = w_.diffuse.add(i, hit, frame, frame.toLocal(-w_.rays[i].d).z, reflectance, w_.throughput[i], uBsdf);
-    if (ctx_.lights.empty()) return;
+    if (!ctx_.lights.emitsLight()) return;
     const std::optional<LightSample> ls = ctx_.lights.sample(hit.p, uLight, uEmitter);
     if (ls && (ls->pdf > 0.0f || ls->delta)) w_.diffuse.setLight(k, *ls);
   }

@@ -57,7 +57,7 @@ Ray rayToLight(const Vec3& p, const LightSample& ls) {
 Color mediumLight(const RenderContext& ctx, const Vec3& p, const Vec3& wi, int medium, Rng& rng) {
   const Vec2 u = rng.next2D();
   const float uLight = rng.nextFloat();
-  if (ctx.lights.empty()) return Color(0.0f);
+  if (!ctx.lights.emitsLight()) return Color(0.0f);
   const std::optional<LightSample> ls = ctx.lights.sample(p, u, uLight);
   if (!ls || !(ls->pdf > 0.0f || ls->delta) || !(maxComponent(ls->radiance) > 0.0f)) return Color(0.0f);
   const float f = phaseValue(ctx.scene.media[medium].phase, wi, ls->wi);
